@@ -1,0 +1,82 @@
+"""The core's entry points, the same in CPython and in the page (`window.clothCore`).
+
+`run(scene_json_text, frames)` is the whole headless pipeline: the CLI prints exactly what it
+returns, and the parity tests compare its CPython and browser results number for number.
+"""
+
+from cloth.host import to_json, kind_of, is_finite
+from cloth.scene import parse_scene, SceneError, fail, MAX_FRAMES
+from cloth.sim import Cloth
+
+# A trace holds frames x vertices points; past this it would be gigabytes of JSON.
+MAX_TRACE_POINTS = 20000000
+
+
+def load(scene_json_text):
+    """Scene JSON text -> a Cloth ready to step (SceneError if the scene is bad)."""
+    return Cloth(parse_scene(scene_json_text))
+
+
+def check_frames(frames):
+    if kind_of(frames) != 'number' or not is_finite(frames) or frames != frames // 1:
+        fail('frames: must be a non-negative integer')
+    if frames < 0 or frames > MAX_FRAMES:
+        fail('frames: must be a non-negative integer of at most 10000000')
+
+
+def apply_action(cloth, action):
+    op = action.op
+    k = action.vertex
+    if op == 'grab':
+        if action.has_to:
+            cloth.grab(k, action.to_x, action.to_y)
+        else:
+            cloth.grab(k, cloth.pos[k + k], cloth.pos[k + k + 1])
+    elif op == 'move':
+        cloth.move(k, action.to_x, action.to_y)
+    elif op == 'release':
+        cloth.release(k)
+    elif op == 'pin':
+        cloth.pin(k)
+    elif op == 'unpin':
+        cloth.unpin(k)
+
+
+def positions_of(cloth):
+    pos = cloth.pos
+    return [[pos[k + k], pos[k + k + 1]] for k in range(cloth.n_verts)]
+
+
+def simulate(cloth, frames, trace):
+    """Step `frames` frames, applying each action before the frame after its `frame`."""
+    actions = cloth.scene.actions
+    next_action = 0
+    for f in range(frames):
+        while next_action < len(actions) and actions[next_action].frame <= f:
+            apply_action(cloth, actions[next_action])
+            next_action += 1
+        cloth.frame()
+        if trace is not None:
+            trace.append(positions_of(cloth))
+
+
+def run(scene_json_text, frames, with_trace=False):
+    """Run a scene for `frames` frames; return the result as JSON text (see README)."""
+    cloth = load(scene_json_text)
+    check_frames(frames)
+    if with_trace and frames * cloth.n_verts > MAX_TRACE_POINTS:
+        fail('frames: a trace of frames x vertices must be at most 20000000 points')
+    trace = [] if with_trace else None
+    simulate(cloth, frames, trace)
+    cloth.measure()
+    m = cloth.n_edges
+    result = {
+        'frames': frames,
+        'edges': [[cloth.edge_a[e], cloth.edge_b[e]] for e in range(m)],
+        'positions': positions_of(cloth),
+        'edge_diff': [cloth.diff[e] for e in range(m)],
+        'node_stress': [cloth.stress[k] for k in range(cloth.n_verts)],
+    }
+    if with_trace:
+        result['trace'] = trace
+    return to_json(result)

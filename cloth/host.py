@@ -1,0 +1,132 @@
+"""What differs between the two runtimes, and nothing else.
+
+Everything in the core above this module is plain Python that Transcrypt turns into the
+same arithmetic in JS. Here live the few primitives whose best form differs: storage (lists in
+CPython, where a list comprehension is 2.3x faster than `array.array`; typed arrays in JS,
+which is what makes the transpiled kernel as fast as hand-written JS), JSON, and the type
+tests that JSON values need (Transcrypt's `isinstance` does not know JS's plain objects).
+"""
+
+# __pragma__ ('skip')
+import json as _json
+import math as _math
+
+
+def f64(n):
+    return [0.0 for _ in range(n)]
+
+
+def i32(n):
+    return [0 for _ in range(n)]
+
+
+def _reject_constant(name):
+    raise ValueError(name)
+
+
+def parse_json(text):
+    """Parse JSON text the way JS's JSON.parse does: every number a double, no NaN or Infinity.
+
+    Returns None when the text is not valid JSON (the caller words the error)."""
+    if not isinstance(text, str):
+        return None
+    try:
+        return (True, _json.loads(text, parse_int=float, parse_constant=_reject_constant))
+    except (ValueError, RecursionError):
+        return None
+
+
+def to_json(value):
+    return _json.dumps(value, separators=(',', ':'), allow_nan=False)
+
+
+def kind_of(value):
+    """'null', 'bool', 'number', 'string', 'list' or 'object', as JSON sees the value."""
+    if value is None:
+        return 'null'
+    if isinstance(value, bool):
+        return 'bool'
+    if isinstance(value, (int, float)):
+        return 'number'
+    if isinstance(value, str):
+        return 'string'
+    if isinstance(value, (list, tuple)):
+        return 'list'
+    if isinstance(value, dict):
+        return 'object'
+    return 'other'
+
+
+def is_finite(x):
+    return _math.isfinite(x)
+
+
+def key_list(obj):
+    return list(obj.keys())
+
+
+def has_key(obj, key):
+    return key in obj
+
+
+def as_index(x):
+    return int(x)
+# __pragma__ ('noskip')
+
+# __pragma__ ('ecom')
+'''?
+def f64(n):
+    return __new__ (Float64Array (n))
+
+
+def i32(n):
+    return __new__ (Int32Array (n))
+
+
+def parse_json(text):
+    if typeof (text) != 'string':
+        return None
+    try:
+        return [True, JSON.parse (text)]
+    except:
+        return None
+
+
+def to_json(value):
+    return JSON.stringify (value)
+
+
+def kind_of(value):
+    if value is None:
+        return 'null'
+    t = typeof (value)
+    if t == 'boolean':
+        return 'bool'
+    if t == 'number':
+        return 'number'
+    if t == 'string':
+        return 'string'
+    if Array.isArray (value):
+        return 'list'
+    if t == 'object':
+        return 'object'
+    return 'other'
+
+
+def is_finite(x):
+    return Number.isFinite (x)
+
+
+def key_list(obj):
+    # Written as raw JS: Transcrypt would rename `keys` to `py_keys`.
+    return __pragma__ ('js', '{}', 'Object.keys (obj)')
+
+
+def has_key(obj, key):
+    return __pragma__ ('js', '{}', 'Object.prototype.hasOwnProperty.call (obj, key)')
+
+
+def as_index(x):
+    return x
+?'''
+# __pragma__ ('noecom')

@@ -1,0 +1,268 @@
+"""A scene is data: one JSON object drives the CLI, the tests, the benchmark and the page.
+
+`parse_scene` validates every key and returns a `Scene` with defaults filled in. Every error is
+a `SceneError` whose one-line message starts with the key it is about, so that the CLI, the
+page and `clothCore.run` all say the same thing. Messages never print a parsed number back:
+CPython and JS would spell it differently.
+"""
+
+import math
+
+from cloth.host import parse_json, kind_of, is_finite, key_list, has_key, as_index
+
+# Limits. A grid larger than MAX_VERTICES would need hundreds of MB of state (and would not
+# run in real time anyway); the other bounds keep every parameter physically meaningful.
+MAX_VERTICES = 1000000
+MAX_SUBSTEPS = 1000
+MAX_ITERATIONS = 10000
+MAX_FRAMES = 10000000
+MAX_ACTIONS = 100000
+
+SOLVERS = ['jakobsen', 'xpbd']
+DEFAULT_SOLVER = 'xpbd'
+OPS = ['grab', 'move', 'release', 'pin', 'unpin']
+
+SCENE_KEYS = ['cols', 'rows', 'spacing', 'pins', 'gravity', 'dt', 'substeps', 'iterations',
+              'damping', 'solver', 'actions', 'tethers', 'shear', 'compliance', 'tolerance',
+              'name']
+ACTION_KEYS = ['frame', 'op', 'vertex', 'to']
+
+
+class SceneError(Exception):
+    """A scene, or a request about one, that the core refuses; the message names the key."""
+    pass
+
+
+def fail(message):
+    raise SceneError(message)
+
+
+# Each solver's defaults for the keys a scene may omit. "jakobsen" is the seed's method
+# exactly: one step of `iterations` Gauss-Seidel sweeps, no extras. "xpbd" is the best
+# configuration the benchmark found (see README): small steps plus long-range tethers.
+def solver_defaults(solver):
+    if solver == 'jakobsen':
+        return {'substeps': 1, 'iterations': 20, 'tethers': False, 'tolerance': 0.0}
+    return {'substeps': 8, 'iterations': 2, 'tethers': True, 'tolerance': 1e-4}
+
+
+class Scene:
+    """A validated scene: every key present, numbers checked, indices in range."""
+
+    def __init__(self):
+        self.cols = 1
+        self.rows = 1
+        self.spacing = 1.0
+        self.pins = []
+        self.gravity_x = 0.0
+        self.gravity_y = -9.81
+        self.dt = 1.0 / 60.0
+        self.substeps = 1
+        self.iterations = 20
+        self.damping = 0.0
+        self.solver = DEFAULT_SOLVER
+        self.tethers = False
+        self.shear = False
+        self.compliance = 0.0
+        self.tolerance = 0.0
+        self.actions = []      # list of Action, sorted by frame (stable)
+
+
+class Action:
+    def __init__(self, frame, op, vertex, has_to, to_x, to_y):
+        self.frame = frame
+        self.op = op
+        self.vertex = vertex
+        self.has_to = has_to
+        self.to_x = to_x
+        self.to_y = to_y
+
+
+def number(value, key, lo, hi, lo_open, what):
+    """A finite JSON number in [lo, hi] (or (lo, hi] when lo_open); `what` words the range."""
+    if kind_of(value) != 'number':
+        fail(key + ': must be a number')
+    if not is_finite(value):
+        fail(key + ': must be finite')
+    if value < lo or value > hi or (lo_open and value == lo):
+        fail(key + ': must be ' + what)
+    return value
+
+
+def integer(value, key, lo, hi, what):
+    if kind_of(value) != 'number':
+        fail(key + ': must be an integer')
+    if not is_finite(value) or math.floor(value) != value:
+        fail(key + ': must be an integer')
+    if value < lo or value > hi:
+        fail(key + ': must be ' + what)
+    return as_index(value)
+
+
+def boolean(value, key):
+    if kind_of(value) != 'bool':
+        fail(key + ': must be true or false')
+    return value
+
+
+def point(value, key):
+    if kind_of(value) != 'list' or len(value) != 2:
+        fail(key + ': must be a list of two numbers [x, y]')
+    x = number(value[0], key, -1e9, 1e9, False, 'within 1e9 of the origin')
+    y = number(value[1], key, -1e9, 1e9, False, 'within 1e9 of the origin')
+    return [x, y]
+
+
+def parse_scene(text):
+    """JSON text -> Scene, or SceneError naming the offending key."""
+    parsed = parse_json(text)
+    if parsed is None:
+        fail('scene: not valid JSON')
+    return scene_from_object(parsed[1])
+
+
+def scene_from_object(obj):
+    if kind_of(obj) != 'object':
+        fail('scene: must be a JSON object')
+    for key in key_list(obj):
+        if not known(SCENE_KEYS, key):
+            fail(key + ': unknown key (known: ' + ', '.join(SCENE_KEYS) + ')')
+    s = Scene()
+    if not has_key(obj, 'cols'):
+        fail('cols: missing (an integer >= 1)')
+    if not has_key(obj, 'rows'):
+        fail('rows: missing (an integer >= 1)')
+    if not has_key(obj, 'spacing'):
+        fail('spacing: missing (the rest length in metres, > 0)')
+    s.cols = integer(obj['cols'], 'cols', 1, MAX_VERTICES, 'an integer from 1 to 1000000')
+    s.rows = integer(obj['rows'], 'rows', 1, MAX_VERTICES, 'an integer from 1 to 1000000')
+    if s.cols * s.rows > MAX_VERTICES:
+        fail('cols: cols * rows must be at most 1000000 vertices (the grid is too large)')
+    s.spacing = number(obj['spacing'], 'spacing', 1e-4, 1e4, False,
+                       'from 0.0001 to 10000 metres')
+    n = s.cols * s.rows
+
+    if has_key(obj, 'solver'):
+        if kind_of(obj['solver']) != 'string' or not known(SOLVERS, obj['solver']):
+            fail('solver: must be one of ' + ', '.join(SOLVERS))
+        s.solver = obj['solver']
+    defaults = solver_defaults(s.solver)
+    s.substeps = defaults['substeps']
+    s.iterations = defaults['iterations']
+    s.tethers = defaults['tethers']
+    s.tolerance = defaults['tolerance']
+
+    if has_key(obj, 'pins'):
+        pins = obj['pins']
+        if kind_of(pins) != 'list':
+            fail('pins: must be a list of vertex indices')
+        for i in range(len(pins)):
+            s.pins.append(integer(pins[i], 'pins', 0, n - 1,
+                                  'vertex indices from 0 to cols * rows - 1'))
+    if has_key(obj, 'gravity'):
+        g = obj['gravity']
+        if kind_of(g) != 'list' or len(g) != 2:
+            fail('gravity: must be a list of two numbers [gx, gy] in m/s^2')
+        s.gravity_x = number(g[0], 'gravity', -1e5, 1e5, False, 'at most 1e5 m/s^2 per axis')
+        s.gravity_y = number(g[1], 'gravity', -1e5, 1e5, False, 'at most 1e5 m/s^2 per axis')
+    if has_key(obj, 'dt'):
+        s.dt = number(obj['dt'], 'dt', 0.0, 1.0, True, 'in (0, 1] seconds')
+    if has_key(obj, 'substeps'):
+        s.substeps = integer(obj['substeps'], 'substeps', 1, MAX_SUBSTEPS,
+                             'an integer from 1 to 1000')
+    if has_key(obj, 'iterations'):
+        s.iterations = integer(obj['iterations'], 'iterations', 0, MAX_ITERATIONS,
+                               'an integer from 0 to 10000')
+    if has_key(obj, 'damping'):
+        s.damping = number(obj['damping'], 'damping', 0.0, 1000.0, False,
+                           'from 0 to 1000 per second')
+    if has_key(obj, 'tethers'):
+        s.tethers = boolean(obj['tethers'], 'tethers')
+    if has_key(obj, 'shear'):
+        s.shear = boolean(obj['shear'], 'shear')
+    if has_key(obj, 'compliance'):
+        s.compliance = number(obj['compliance'], 'compliance', 0.0, 1e3, False,
+                              'from 0 to 1000 m/N')
+    if has_key(obj, 'tolerance'):
+        s.tolerance = number(obj['tolerance'], 'tolerance', 0.0, 1.0, False,
+                             'from 0 to 1 (a relative strain)')
+    if has_key(obj, 'name'):
+        if kind_of(obj['name']) != 'string':
+            fail('name: must be a string')
+    if has_key(obj, 'actions'):
+        s.actions = parse_actions(obj['actions'], n)
+    return s
+
+
+def known(names, key):
+    for i in range(len(names)):
+        if names[i] == key:
+            return True
+    return False
+
+
+def parse_actions(actions, n):
+    if kind_of(actions) != 'list':
+        fail('actions: must be a list of {"frame", "op", "vertex", "to"} objects')
+    if len(actions) > MAX_ACTIONS:
+        fail('actions: at most 100000 actions')
+    parsed = []
+    for i in range(len(actions)):
+        a = actions[i]
+        where = 'actions[' + str(i) + ']'
+        if kind_of(a) != 'object':
+            fail(where + ': must be an object with frame, op, vertex and optional to')
+        for key in key_list(a):
+            if not known(ACTION_KEYS, key):
+                fail(where + '.' + key + ': unknown key (known: frame, op, vertex, to)')
+        for key in ['frame', 'op', 'vertex']:
+            if not has_key(a, key):
+                fail(where + '.' + key + ': missing')
+        frame = integer(a['frame'], where + '.frame', 0, MAX_FRAMES,
+                        'an integer from 0 to 10000000')
+        op = a['op']
+        if kind_of(op) != 'string' or not known(OPS, op):
+            fail(where + '.op: must be one of ' + ', '.join(OPS))
+        vertex = integer(a['vertex'], where + '.vertex', 0, n - 1,
+                         'a vertex index from 0 to cols * rows - 1')
+        has_to = has_key(a, 'to')
+        to = [0.0, 0.0]
+        if has_to:
+            if op != 'grab' and op != 'move':
+                fail(where + '.to: only grab and move take a target')
+            to = point(a['to'], where + '.to')
+        elif op == 'move':
+            fail(where + '.to: missing (move needs a target [x, y])')
+        parsed.append(Action(frame, op, vertex, has_to, to[0], to[1]))
+    return check_holds(stable_sort_by_frame(parsed))
+
+
+def stable_sort_by_frame(actions):
+    """Insertion sort: stable, and the same in both runtimes (lists are usually sorted)."""
+    out = []
+    for i in range(len(actions)):
+        out.append(actions[i])
+        j = len(out) - 1
+        while j > 0 and out[j - 1].frame > out[j].frame:
+            tmp = out[j - 1]
+            out[j - 1] = out[j]
+            out[j] = tmp
+            j -= 1
+    return out
+
+
+def check_holds(actions):
+    """`move` and `release` need a vertex that an earlier `grab` holds: say so up front."""
+    held = {}
+    for i in range(len(actions)):
+        a = actions[i]
+        key = str(a.vertex)
+        if a.op == 'grab':
+            held[key] = True
+        elif a.op == 'move' or a.op == 'release':
+            if not has_key(held, key) or not held[key]:
+                fail('actions: ' + a.op + ' of vertex ' + key + ' at frame ' + str(a.frame) +
+                     ' which is not held (grab it first)')
+            if a.op == 'release':
+                held[key] = False
+    return actions

@@ -1,0 +1,148 @@
+"""The per-step kernels: integration and the constraint projections.
+
+Each kernel is one plain function over flat arrays, with the arrays and constants in locals
+and no calls in its loop but `sqrt`: that is what lets Transcrypt's output run as fast as
+hand-written JS (../shared/notes/transcrypt.md section 3). Only + - * / and sqrt touch the
+floats, in a fixed order, so CPython and the browser agree bit for bit.
+
+Layout: `pos` and `prev` interleave x and y (pos[2k], pos[2k+1]); `inv_mass[k]` is 0 for a
+pinned or held vertex; edge e joins `edge_a[e]` and `edge_b[e]` with rest length `rest[e]`.
+"""
+
+import math
+
+# Below this squared length an edge has no direction to push along (two fixed vertices
+# dragged onto one point): it is skipped rather than divided by zero, which would turn the
+# whole cloth into NaN within a frame.
+TINY2 = 1e-30
+
+
+def integrate(pos, prev, inv_mass, n, keep, ax, ay):
+    """Position Verlet, x' = x + (x - x*) * keep + a h^2, for every free vertex.
+
+    keep = 1 / (1 + damping h): the velocity (x - x*) / h loses damping * h of itself per step,
+    in a form that stays in (0, 1] for any damping and step (exp would not be bit-exact)."""
+    for k in range(n):
+        if inv_mass[k] == 0.0:
+            continue
+        i = k + k
+        x = pos[i]
+        y = pos[i + 1]
+        pos[i] = x + (x - prev[i]) * keep + ax
+        pos[i + 1] = y + (y - prev[i + 1]) * keep + ay
+        prev[i] = x
+        prev[i + 1] = y
+
+
+def sweep_jakobsen(pos, inv_mass, edge_a, edge_b, rest, m, track):
+    """One Gauss-Seidel pass of the seed's projection; returns the largest |len - rest| / rest
+    seen (when `track`, else 0).
+
+    Per edge: diff = (len - rest) / len, and each end moves along the edge by its share
+    w_i / (w_a + w_b) of diff: 1/2 each for two free ends (the seed's formula exactly), the
+    whole of it for a free end joined to a fixed one, nothing for two fixed ends."""
+    sqrt = math.sqrt
+    worst = 0.0
+    for e in range(m):
+        a = edge_a[e]
+        b = edge_b[e]
+        wa = inv_mass[a]
+        wb = inv_mass[b]
+        w = wa + wb
+        if w == 0.0:
+            continue
+        ia = a + a
+        ib = b + b
+        dx = pos[ib] - pos[ia]
+        dy = pos[ib + 1] - pos[ia + 1]
+        d2 = dx * dx + dy * dy
+        if d2 < TINY2:
+            continue
+        length = sqrt(d2)
+        err = length - rest[e]
+        if track:
+            r = err / rest[e]
+            if r > worst:
+                worst = r
+            elif -r > worst:
+                worst = -r
+        s = err / length / w
+        sa = s * wa
+        sb = s * wb
+        pos[ia] += dx * sa
+        pos[ia + 1] += dy * sa
+        pos[ib] -= dx * sb
+        pos[ib + 1] -= dy * sb
+    return worst
+
+
+def sweep_xpbd(pos, inv_mass, edge_a, edge_b, rest, lam, m, alpha, track):
+    """One Gauss-Seidel pass of XPBD (Macklin, Mueller, Chentanez 2016) on C = len - rest.
+
+    d_lambda = (-C - alpha~ lambda) / (w_a + w_b + alpha~), alpha~ = compliance / h^2; the
+    accumulated lambda makes the stiffness a material property (compliance, m/N) instead of a
+    function of the iteration count. With compliance 0 it is the seed's projection."""
+    sqrt = math.sqrt
+    worst = 0.0
+    for e in range(m):
+        a = edge_a[e]
+        b = edge_b[e]
+        wa = inv_mass[a]
+        wb = inv_mass[b]
+        w = wa + wb
+        if w == 0.0:
+            continue
+        ia = a + a
+        ib = b + b
+        dx = pos[ib] - pos[ia]
+        dy = pos[ib + 1] - pos[ia + 1]
+        d2 = dx * dx + dy * dy
+        if d2 < TINY2:
+            continue
+        length = sqrt(d2)
+        err = length - rest[e]
+        if track:
+            r = err / rest[e]
+            if r > worst:
+                worst = r
+            elif -r > worst:
+                worst = -r
+        dl = (-err - alpha * lam[e]) / (w + alpha)
+        lam[e] += dl
+        s = dl / length
+        sa = s * wa
+        sb = s * wb
+        pos[ia] -= dx * sa
+        pos[ia + 1] -= dy * sa
+        pos[ib] += dx * sb
+        pos[ib + 1] += dy * sb
+    return worst
+
+
+def project_tethers(pos, inv_mass, anchor, tether, n):
+    """Long-range attachments (Kim, Chentanez, Mueller 2012): a free vertex may be no farther
+    from its anchor (the nearest fixed vertex along the cloth) than the rest distance between
+    them. One-sided and one projection per vertex, yet it removes the low-frequency stretch
+    that Gauss-Seidel sweeps take O(N^2) passes to remove."""
+    sqrt = math.sqrt
+    for k in range(n):
+        c = anchor[k]
+        if c < 0 or inv_mass[k] == 0.0:
+            continue
+        i = k + k
+        j = c + c
+        dx = pos[i] - pos[j]
+        dy = pos[i + 1] - pos[j + 1]
+        d2 = dx * dx + dy * dy
+        limit = tether[k]
+        if d2 <= limit * limit:
+            continue
+        d = sqrt(d2)
+        s = (d - limit) / d
+        pos[i] -= dx * s
+        pos[i + 1] -= dy * s
+
+
+def clear(values, m):
+    for e in range(m):
+        values[e] = 0.0

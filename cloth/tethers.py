@@ -1,0 +1,81 @@
+"""Anchors for long-range tethers: for every vertex, the nearest fixed vertex along the cloth.
+
+"Nearest along the cloth" is the shortest path over the scene's edges weighted by rest
+length (multi-source Dijkstra). That path length is the farthest the vertex can get from its
+anchor without stretching an edge, so a tether of that length never fights the cloth; a
+straight-line rest distance would wrongly forbid the grid's shear modes.
+Run only when the set of fixed vertices changes (pin, unpin, grab, release), not per frame.
+"""
+
+from cloth.host import f64, i32
+
+
+def find_anchors(n, adj_start, adj_vertex, adj_rest, inv_mass, anchor, tether):
+    """Fill anchor[k] (the nearest fixed vertex, or -1 if none is reachable) and tether[k]
+    (the rest-length distance to it); a binary heap of (distance, vertex) with lazy deletion."""
+    total = adj_start[n] + n + 1
+    heap_d = f64(total)
+    heap_v = i32(total)
+    size = 0
+    for k in range(n):
+        anchor[k] = -1
+        tether[k] = 0.0
+        if inv_mass[k] == 0.0:
+            anchor[k] = k
+            heap_d[size] = 0.0
+            heap_v[size] = k
+            size += 1
+    # Every fixed vertex starts at distance 0, so the initial heap is already ordered.
+    done = i32(n)
+    while size > 0:
+        d = heap_d[0]
+        v = heap_v[0]
+        size -= 1
+        heap_d[0] = heap_d[size]
+        heap_v[0] = heap_v[size]
+        sift_down(heap_d, heap_v, size, 0)
+        if done[v] == 1:
+            continue
+        done[v] = 1
+        for j in range(adj_start[v], adj_start[v + 1]):
+            u = adj_vertex[j]
+            nd = d + adj_rest[j]
+            if done[u] == 0 and (anchor[u] < 0 or nd < tether[u]):
+                anchor[u] = anchor[v]
+                tether[u] = nd
+                heap_d[size] = nd
+                heap_v[size] = u
+                sift_up(heap_d, heap_v, size)
+                size += 1
+
+
+def sift_up(heap_d, heap_v, i):
+    while i > 0:
+        parent = (i - 1) >> 1
+        if heap_d[parent] <= heap_d[i]:
+            return
+        swap(heap_d, heap_v, i, parent)
+        i = parent
+
+
+def sift_down(heap_d, heap_v, size, i):
+    while True:
+        left = i + i + 1
+        if left >= size:
+            return
+        child = left
+        if left + 1 < size and heap_d[left + 1] < heap_d[left]:
+            child = left + 1
+        if heap_d[i] <= heap_d[child]:
+            return
+        swap(heap_d, heap_v, i, child)
+        i = child
+
+
+def swap(heap_d, heap_v, i, j):
+    d = heap_d[i]
+    heap_d[i] = heap_d[j]
+    heap_d[j] = d
+    v = heap_v[i]
+    heap_v[i] = heap_v[j]
+    heap_v[j] = v
