@@ -1,0 +1,236 @@
+"""Build the page: transpile the core with Transcrypt, link it into one classic
+script, and inline it with the hand-written webgl/ sources into dist/index.html.
+
+    python build.py            # write dist/index.html
+    python build.py --check    # exit 1 if dist/index.html is not what the sources give
+
+Why a linker: Transcrypt 3.9 emits only ES modules, and Chromium refuses module
+scripts (and their imports) on a file:// page. So each emitted module is wrapped in
+a function scope, its `import` lines become reads from the modules evaluated
+before it (dependency order) and its `export`s become the function's return value.
+Only the forms Transcrypt emits are accepted; anything else stops the build.
+
+Reproducible: Transcrypt's timestamp line and sourceMappingURL lines are dropped,
+files are read in a fixed order, so the same sources give a byte-identical dist/.
+Transcrypt's -b wipes its output folder, so it writes into build/, never dist/.
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.abspath(__file__))
+ENTRY = os.path.join('cloth', 'api.py')
+TRANSCRYPT_OUT = os.path.join(ROOT, 'build', 'transcrypt')
+WEBGL = os.path.join(ROOT, 'webgl')
+DIST_HTML = os.path.join(ROOT, 'dist', 'index.html')
+
+# The hand-written page, in load order. Every webgl/*.js must be listed here.
+SCRIPTS = ['core.js', 'scenes.js', 'renderer.js', 'input.js', 'ui.js', 'app.js']
+STYLES = ['style.css']
+TEMPLATE = 'index.html'
+
+_IMPORT_NAMED = re.compile(r"^import\s*\{([^}]*)\}\s*from\s*'\./([^']+)\.js';?\s*$")
+_IMPORT_STAR = re.compile(r"^import\s*\*\s*as\s+([\w$]+)\s+from\s*'\./([^']+)\.js';?\s*$")
+_EXPORT_DECL = re.compile(r'^export\s+(var|let|const|function\*?|class|async\s+function)\s+([\w$]+)')
+_EXPORT_LIST = re.compile(r'^export\s*\{([^}]*)\}\s*;?\s*$')
+# Transcrypt passes some JS reserved words through as variable names (a Python
+# local called `do` becomes `var do`), which only fails when the page loads.
+_RESERVED = re.compile(r'\b(?:var|let|const)\s+(do|if|in|for|new|try|case|else|enum|this|void|with|'
+                       r'break|catch|class|const|super|throw|while|yield|delete|export|import|'
+                       r'return|static|switch|typeof|extends|finally|continue|debugger|function|'
+                       r'instanceof|interface|package|private|protected|public|implements)\b')
+_TIMESTAMP = re.compile(r"^// Transcrypt'ed from Python, ")
+_SOURCEMAP = re.compile(r'^//# sourceMappingURL=')
+
+
+class BuildError(Exception):
+    pass
+
+
+def transpile(out_dir=TRANSCRYPT_OUT):
+    """Run Transcrypt on the entry module; -od must be absolute (it is taken
+    relative to the source file's folder otherwise)."""
+    cmd = [sys.executable, '-m', 'transcrypt', '-n', '-b', '-od', out_dir, ENTRY]
+    proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
+    if proc.returncode != 0 or not os.path.exists(os.path.join(out_dir, 'api.js')):
+        raise BuildError('transcrypt failed:\n' + proc.stdout + proc.stderr)
+    return out_dir
+
+
+def _ident(module):
+    return '__m_' + re.sub(r'[^\w$]', '_', module)
+
+
+def _split_names(spec):
+    """'a, b as c' -> [('a', 'a'), ('b', 'c')] (exported name, local name)."""
+    out = []
+    for part in spec.split(','):
+        part = part.strip()
+        if not part:
+            continue
+        bits = part.split()
+        if len(bits) == 1:
+            out.append((bits[0], bits[0]))
+        elif len(bits) == 3 and bits[1] == 'as':
+            out.append((bits[0], bits[2]))
+        else:
+            raise BuildError('cannot parse import/export list: ' + spec)
+    return out
+
+
+def parse_module(text, module):
+    """Return (deps, prologue lines, body lines, exports [(exported, local)])."""
+    deps, prologue, body, exports = [], [], [], []
+    for line in text.split('\n'):
+        if _TIMESTAMP.match(line) or _SOURCEMAP.match(line):
+            continue
+        m = _RESERVED.search(line)
+        if m:
+            raise BuildError('%s: the Python source uses the JS reserved word %r as a name: %s'
+                             % (module, m.group(1), line.strip()[:120]))
+        m = _IMPORT_NAMED.match(line)
+        if m:
+            dep = m.group(2)
+            deps.append(dep)
+            for exported, local in _split_names(m.group(1)):
+                prologue.append('var %s = %s.%s;' % (local, _ident(dep), exported))
+            continue
+        m = _IMPORT_STAR.match(line)
+        if m:
+            dep = m.group(2)
+            deps.append(dep)
+            prologue.append('var %s = %s;' % (m.group(1), _ident(dep)))
+            continue
+        if line.startswith('import ') or line.startswith('import{'):
+            raise BuildError('%s: unsupported import form: %s' % (module, line[:120]))
+        m = _EXPORT_DECL.match(line)
+        if m:
+            exports.append((m.group(2), m.group(2)))
+            body.append(line[len('export'):].lstrip())
+            continue
+        m = _EXPORT_LIST.match(line)
+        if m:
+            for local, exported in _split_names(m.group(1)):
+                exports.append((exported, local))
+            continue
+        if line.startswith('export ') or line.startswith('export{'):
+            raise BuildError('%s: unsupported export form: %s' % (module, line[:120]))
+        body.append(line)
+    while body and not body[-1].strip():
+        body.pop()
+    return deps, prologue, body, exports
+
+
+def link(js_dir, entry='api'):
+    """Link the ES modules under js_dir, reachable from entry, into one classic
+    script that defines the single global `clothTranscrypt`."""
+    parsed = {}
+    order = []
+
+    def visit(module, stack):
+        if module in parsed:
+            if module in stack:
+                raise BuildError('import cycle: ' + ' -> '.join(stack + [module]))
+            return
+        path = os.path.join(js_dir, module + '.js')
+        if not os.path.exists(path):
+            raise BuildError('missing module ' + path)
+        with open(path, encoding='utf-8') as f:
+            parsed[module] = parse_module(f.read(), module)
+        for dep in parsed[module][0]:
+            visit(dep, stack + [module])
+        order.append(module)
+
+    visit(entry, [])
+    out = ['// Generated by build.py from cloth/ via Transcrypt: do not edit.',
+           'var clothTranscrypt = (function () {']
+    for module in order:
+        deps, prologue, body, exports = parsed[module]
+        out.append('// ---- module %s ----' % module)
+        out.append('var %s = (function () {' % _ident(module))
+        out.append("'use strict';")
+        out.extend(prologue)
+        out.extend(body)
+        fields = ', '.join('%s: %s' % (exported, local) for exported, local in exports)
+        out.append('return {%s};' % fields)
+        out.append('})();')
+    out.append('return {api: %s};' % _ident(entry))
+    out.append('})();')
+    return '\n'.join(out) + '\n'
+
+
+def _read(name):
+    with open(os.path.join(WEBGL, name), encoding='utf-8') as f:
+        return f.read()
+
+
+def _inline_safe(text, name):
+    # Inside <script>, '</script' ends the element and '<!--' can change how the
+    # parser reads the rest; neither may appear in the inlined code.
+    text = re.sub(r'</(script)', r'<\\/\1', text, flags=re.IGNORECASE)
+    if '<!--' in text:
+        raise BuildError(name + ": contains '<!--', which is unsafe inside an inline <script>")
+    return text
+
+
+def page(core_js):
+    """dist/index.html: the template with styles and scripts inlined."""
+    listed = set(SCRIPTS)
+    present = {n for n in os.listdir(WEBGL) if n.endswith('.js')}
+    if present != listed:
+        raise BuildError('webgl/*.js and build.SCRIPTS differ: %s' % sorted(present ^ listed))
+    css = ''.join(_read(n) for n in STYLES)
+    blocks = ['<script>\n' + _inline_safe(core_js, 'core') + '</script>']
+    for name in SCRIPTS:
+        blocks.append('<script>\n// ---- webgl/%s ----\n%s</script>' % (name, _inline_safe(_read(name), name)))
+    html = _read(TEMPLATE)
+    for marker in ('<!-- @style -->', '<!-- @scripts -->'):
+        if html.count(marker) != 1:
+            raise BuildError('template needs exactly one ' + marker)
+    html = html.replace('<!-- @style -->', '<style>\n' + css + '</style>')
+    html = html.replace('<!-- @scripts -->', '\n'.join(blocks))
+    return html
+
+
+def build(out_dir=TRANSCRYPT_OUT):
+    return page(link(transpile(out_dir)))
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    ap.add_argument('--check', action='store_true',
+                    help='exit 1 if dist/index.html differs from a fresh build; write nothing in dist/')
+    args = ap.parse_args(argv)
+    try:
+        if args.check:
+            with tempfile.TemporaryDirectory(prefix='cloth-build-') as tmp:
+                html = build(os.path.join(tmp, 'transcrypt'))
+        else:
+            html = build()
+    except BuildError as e:
+        print('build.py: ' + str(e), file=sys.stderr)
+        return 2
+    data = html.encode('utf-8')
+    if args.check:
+        try:
+            with open(DIST_HTML, 'rb') as f:
+                current = f.read()
+        except OSError:
+            current = None
+        if current != data:
+            print('build.py: dist/index.html is stale; run `python build.py`', file=sys.stderr)
+            return 1
+        print('dist/index.html is up to date')
+        return 0
+    os.makedirs(os.path.dirname(DIST_HTML), exist_ok=True)
+    with open(DIST_HTML, 'wb') as f:
+        f.write(data)
+    print('wrote dist/index.html (%d bytes)' % len(data))
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

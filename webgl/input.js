@@ -1,0 +1,94 @@
+// Pointer input: mouse, touch and pen through Pointer Events.
+//
+// Press on or near a vertex: it is grabbed and held exactly under the pointer
+// until release (each pointer holds its own vertex, so two fingers can pull two
+// corners). Right-click, Shift+click, or a double-tap on touch toggles a pin.
+// The canvas has CSS `touch-action: none`, otherwise the browser claims a touch
+// for scrolling and sends pointercancel on the first move.
+'use strict';
+
+window.clothInput = (function () {
+  // How close (CSS pixels) a press must be to a vertex to grab it.
+  const PICK_RADIUS = { mouse: 18, pen: 22, touch: 30 };
+  const DOUBLE_TAP_MS = 350;
+  const DOUBLE_TAP_PX = 30;
+  const TAP_MOVE_PX = 10;
+
+  // app: {toWorld(clientX, clientY) -> [x, y], pick(x, y, radiusCss) -> k,
+  //       grab(k, x, y), move(k, x, y), release(k), togglePin(k), isHeld(k)}
+  function attach(canvas, app) {
+    const drags = new Map();   // pointerId -> {k, x0, y0, moved}
+    let lastTap = null;         // {t, x, y, k}
+
+    function radius(e) { return PICK_RADIUS[e.pointerType] || PICK_RADIUS.mouse; }
+
+    function pickAt(e) {
+      const w = app.toWorld(e.clientX, e.clientY);
+      return { k: app.pick(w[0], w[1], radius(e)), w: w };
+    }
+
+    canvas.addEventListener('contextmenu', function (e) { e.preventDefault(); });
+
+    canvas.addEventListener('pointerdown', function (e) {
+      const hit = pickAt(e);
+      if (e.pointerType === 'mouse' && (e.button === 2 || (e.button === 0 && e.shiftKey))) {
+        e.preventDefault();
+        if (hit.k >= 0) app.togglePin(hit.k);
+        return;
+      }
+      if (e.button !== 0 || hit.k < 0 || app.isHeld(hit.k)) return;
+      e.preventDefault();
+      try { canvas.setPointerCapture(e.pointerId); } catch (err) { /* untrusted event */ }
+      drags.set(e.pointerId, { k: hit.k, x0: e.clientX, y0: e.clientY, moved: false });
+      app.grab(hit.k, hit.w[0], hit.w[1]);
+      canvas.classList.add('dragging');
+    });
+
+    canvas.addEventListener('pointermove', function (e) {
+      const d = drags.get(e.pointerId);
+      if (!d) {
+        if (e.pointerType === 'mouse' && drags.size === 0) {
+          canvas.classList.toggle('can-grab', pickAt(e).k >= 0);
+        }
+        return;
+      }
+      if (Math.abs(e.clientX - d.x0) + Math.abs(e.clientY - d.y0) > TAP_MOVE_PX) d.moved = true;
+      const w = app.toWorld(e.clientX, e.clientY);
+      app.move(d.k, w[0], w[1]);
+    });
+
+    function end(e) {
+      const d = drags.get(e.pointerId);
+      if (!d) return;
+      drags.delete(e.pointerId);
+      if (drags.size === 0) canvas.classList.remove('dragging');
+      if (e.type === 'pointerup') {
+        // Land exactly where the pointer was let go.
+        const w = app.toWorld(e.clientX, e.clientY);
+        app.move(d.k, w[0], w[1]);
+      }
+      app.release(d.k);
+      if (e.type === 'pointerup' && e.pointerType === 'touch' && !d.moved) {
+        const now = e.timeStamp;
+        if (lastTap && now - lastTap.t < DOUBLE_TAP_MS && lastTap.k === d.k &&
+            Math.abs(e.clientX - lastTap.x) + Math.abs(e.clientY - lastTap.y) < DOUBLE_TAP_PX) {
+          app.togglePin(d.k);
+          lastTap = null;
+        } else {
+          lastTap = { t: now, x: e.clientX, y: e.clientY, k: d.k };
+        }
+      }
+    }
+    canvas.addEventListener('pointerup', end);
+    canvas.addEventListener('pointercancel', end);
+    canvas.addEventListener('lostpointercapture', end);
+
+    return {
+      // Let go of everything (a scene change invalidates vertex indices).
+      releaseAll: function () { drags.clear(); canvas.classList.remove('dragging'); },
+      dragging: function () { return drags.size; },
+    };
+  }
+
+  return { attach: attach, PICK_RADIUS: PICK_RADIUS };
+})();

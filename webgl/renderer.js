@@ -1,0 +1,399 @@
+// Raw WebGL renderer: every edge in one instanced draw call, pins as markers.
+//
+// Data layout (one interleaved Float32Array, one instance per edge):
+//   [ax, ay, bx, by, va, vb] * n_edges      world metres; va/vb = colour value at each end
+// A static 4-vertex strip (a_corner = (end 0|1, side -1|+1)) is stretched over each
+// edge in the vertex shader, in device pixels, so lines have the same width at any
+// size and devicePixelRatio (gl.lineWidth > 1 is ignored by most implementations).
+// Per frame the arrays are refilled in place and sent with bufferSubData; they are
+// reallocated only when a scene with more edges or vertices arrives.
+//
+// Colour (fragment shader, t = clamp(value / scale, 0, 1)):
+//   strain: value = |diff| of the edge at both ends, red = base + (1 - base) * t,
+//           so brightness grows linearly with |diff| and an unstrained edge stays visible;
+//   stress: value = node Q at each end, colour = mix(blue, red, t): the gradient
+//           between the two nodes' colours comes from interpolating Q along the edge.
+'use strict';
+
+window.clothRenderer = (function () {
+  const STRAIN_BASE = 0.3;          // red level of an unstrained edge
+  const BACKGROUND = [0.075, 0.082, 0.098];
+  const EDGE_HALF_WIDTH_CSS = 0.75; // half the edge width, CSS pixels
+  const PIN_RADIUS_CSS = 4.5;
+  const HELD_RADIUS_CSS = 8;
+
+  const EDGE_VS = [
+    'attribute vec2 a_corner;   // x: 0 at end a, 1 at end b; y: side, -1 or +1',
+    'attribute vec2 a_pa;',
+    'attribute vec2 a_pb;',
+    'attribute vec2 a_val;      // colour value at end a and end b',
+    'uniform vec2 u_scale;      // world metres -> device pixels (y flips)',
+    'uniform vec2 u_offset;',
+    'uniform vec2 u_viewport;   // device pixels',
+    'uniform mediump float u_halfWidth; // device pixels (precision shared with the fragment shader)',
+    'varying float v_val;',
+    'varying float v_side;',
+    'void main() {',
+    '  vec2 pa = a_pa * u_scale + u_offset;',
+    '  vec2 pb = a_pb * u_scale + u_offset;',
+    '  vec2 d = pb - pa;',
+    '  float len = length(d);',
+    '  vec2 dir = len > 1e-6 ? d / len : vec2(1.0, 0.0);',
+    '  vec2 nrm = vec2(-dir.y, dir.x);',
+    '  float reach = u_halfWidth + 1.0;  // one extra pixel for the antialiased rim',
+    '  vec2 p = mix(pa, pb, a_corner.x) + dir * (2.0 * a_corner.x - 1.0) * u_halfWidth',
+    '         + nrm * a_corner.y * reach;',
+    '  v_val = mix(a_val.x, a_val.y, a_corner.x);',
+    '  v_side = a_corner.y * reach;',
+    '  vec2 clip = p / u_viewport * 2.0 - 1.0;',
+    '  gl_Position = vec4(clip.x, -clip.y, 0.0, 1.0);',
+    '}',
+  ].join('\n');
+
+  const EDGE_FS = [
+    'precision mediump float;',
+    'uniform float u_mode;      // 0 strain, 1 stress',
+    'uniform float u_invScale;',
+    'uniform float u_halfWidth;',
+    'uniform float u_base;',
+    'varying float v_val;',
+    'varying float v_side;',
+    'void main() {',
+    '  float t = clamp(v_val * u_invScale, 0.0, 1.0);',
+    '  vec3 c = u_mode < 0.5 ? vec3(u_base + (1.0 - u_base) * t, 0.0, 0.0)',
+    '                        : mix(vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), t);',
+    '  float a = clamp(u_halfWidth + 0.5 - abs(v_side), 0.0, 1.0);',
+    '  gl_FragColor = vec4(c * a, a);  // premultiplied alpha',
+    '}',
+  ].join('\n');
+
+  const MARK_VS = [
+    'attribute vec2 a_corner;   // -1..1 square',
+    'attribute vec2 a_center;   // world metres',
+    'attribute float a_kind;    // 0 pinned, 1 held, 2 held and pinned',
+    'uniform vec2 u_scale;',
+    'uniform vec2 u_offset;',
+    'uniform vec2 u_viewport;',
+    'uniform float u_pinRadius;',
+    'uniform float u_heldRadius;',
+    'varying vec2 v_uv;',
+    'varying float v_kind;',
+    'varying float v_radius;',
+    'void main() {',
+    '  float r = (a_kind > 0.5 ? u_heldRadius : u_pinRadius) + 1.0;',
+    '  vec2 p = a_center * u_scale + u_offset + a_corner * r;',
+    '  v_uv = a_corner * r;',
+    '  v_kind = a_kind;',
+    '  v_radius = r - 1.0;',
+    '  vec2 clip = p / u_viewport * 2.0 - 1.0;',
+    '  gl_Position = vec4(clip.x, -clip.y, 0.0, 1.0);',
+    '}',
+  ].join('\n');
+
+  const MARK_FS = [
+    'precision mediump float;',
+    'uniform float u_px;        // device pixels per CSS pixel',
+    'varying vec2 v_uv;',
+    'varying float v_kind;',
+    'varying float v_radius;',
+    'void main() {',
+    '  float d = length(v_uv);',
+    '  float outer = clamp(v_radius + 0.5 - d, 0.0, 1.0);',
+    '  vec4 c;',
+    '  if (v_kind < 0.5) {',
+    '    // pinned: a light disc with a dark outline',
+    '    float inner = clamp(v_radius - 1.5 * u_px + 0.5 - d, 0.0, 1.0);',
+    '    c = mix(vec4(0.05, 0.06, 0.08, 1.0), vec4(0.92, 0.94, 0.97, 1.0), inner) * outer;',
+    '  } else {',
+    '    // held: an amber ring (filled centre when also pinned)',
+    '    float ring = clamp(v_radius - 2.0 * u_px + 0.5 - d, 0.0, 1.0);',
+    '    float fill = v_kind > 1.5 ? 1.0 : 1.0 - ring;',
+    '    c = vec4(1.0, 0.75, 0.2, 1.0) * outer * fill;',
+    '  }',
+    '  gl_FragColor = c;',
+    '}',
+  ].join('\n');
+
+  function numbered(src) {
+    return src.split('\n').map(function (l, i) { return (i + 1) + ': ' + l; }).join('\n');
+  }
+
+  function compile(gl, type, src, name) {
+    const sh = gl.createShader(type);
+    gl.shaderSource(sh, src);
+    gl.compileShader(sh);
+    if (!gl.getShaderParameter(sh, gl.COMPILE_STATUS) && !gl.isContextLost()) {
+      const log = gl.getShaderInfoLog(sh);
+      gl.deleteShader(sh);
+      throw new Error(name + ' shader failed to compile:\n' + log + '\n' + numbered(src));
+    }
+    return sh;
+  }
+
+  function program(gl, vs, fs, attribs, name) {
+    const p = gl.createProgram();
+    gl.attachShader(p, compile(gl, gl.VERTEX_SHADER, vs, name + ' vertex'));
+    gl.attachShader(p, compile(gl, gl.FRAGMENT_SHADER, fs, name + ' fragment'));
+    attribs.forEach(function (a, i) { gl.bindAttribLocation(p, i, a); });
+    gl.linkProgram(p);
+    if (!gl.getProgramParameter(p, gl.LINK_STATUS) && !gl.isContextLost()) {
+      throw new Error(name + ' program failed to link: ' + gl.getProgramInfoLog(p));
+    }
+    const u = {};
+    const n = gl.getProgramParameter(p, gl.ACTIVE_UNIFORMS) || 0;
+    for (let i = 0; i < n; i++) {
+      const info = gl.getActiveUniform(p, i);
+      u[info.name] = gl.getUniformLocation(p, info.name);
+    }
+    return { prog: p, u: u };
+  }
+
+  // create(canvas, {webgl: 'auto'|'1'|'0', onLost, onRestored}) -> renderer.
+  // renderer.ok is false (and renderer.error says why) when there is no usable WebGL.
+  function create(canvas, opts) {
+    opts = opts || {};
+    const attrs = { antialias: false, alpha: false, depth: false, stencil: false,
+                    premultipliedAlpha: true, preserveDrawingBuffer: false };
+    let gl = null, version = 0;
+    if (opts.webgl !== '0') {
+      if (opts.webgl !== '1') {
+        gl = canvas.getContext('webgl2', attrs);
+        if (gl) version = 2;
+      }
+      if (!gl) {
+        gl = canvas.getContext('webgl', attrs) || canvas.getContext('experimental-webgl', attrs);
+        if (gl) version = 1;
+      }
+    }
+    const r = {
+      ok: false, error: '', version: version, gl: gl, lost: false,
+      cssWidth: 1, cssHeight: 1, dpr: 1, drawCalls: 0, restores: 0,
+    };
+    if (!gl) {
+      r.error = 'This browser cannot create a WebGL context (neither WebGL 2 nor WebGL 1). ' +
+        'Enable hardware acceleration or WebGL in the browser settings, or try another browser.';
+      return r;
+    }
+
+    let inst = null, edgeProg = null, markProg = null;
+    let cornerBuf = null, markCornerBuf = null, edgeBuf = null, markBuf = null;
+    let edgeData = new Float32Array(0), markData = new Float32Array(0);
+    let edgeCap = 0, markCap = 0, nEdges = 0, nMarks = 0;
+    let view = { x0: 0, x1: 1, y0: -1, y1: 0 };
+    // world -> CSS pixels: cssX = ox + s * x, cssY = oy - s * y
+    let s = 1, ox = 0, oy = 0;
+
+    function initGL() {
+      if (version === 2) {
+        inst = {
+          divisor: function (i, d) { gl.vertexAttribDivisor(i, d); },
+          draw: function (mode, first, count, n) { gl.drawArraysInstanced(mode, first, count, n); },
+        };
+      } else {
+        const ext = gl.getExtension('ANGLE_instanced_arrays');
+        if (!ext) throw new Error('WebGL 1 without ANGLE_instanced_arrays is not supported');
+        inst = {
+          divisor: function (i, d) { ext.vertexAttribDivisorANGLE(i, d); },
+          draw: function (mode, first, count, n) { ext.drawArraysInstancedANGLE(mode, first, count, n); },
+        };
+      }
+      edgeProg = program(gl, EDGE_VS, EDGE_FS, ['a_corner', 'a_pa', 'a_pb', 'a_val'], 'edge');
+      markProg = program(gl, MARK_VS, MARK_FS, ['a_corner', 'a_center', 'a_kind'], 'marker');
+      cornerBuf = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, cornerBuf);
+      gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([0, -1, 0, 1, 1, -1, 1, 1]), gl.STATIC_DRAW);
+      markCornerBuf = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, markCornerBuf);
+      gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, -1, 1, 1, -1, 1, 1]), gl.STATIC_DRAW);
+      edgeBuf = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
+      gl.bufferData(gl.ARRAY_BUFFER, edgeData.byteLength || 4, gl.DYNAMIC_DRAW);
+      markBuf = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
+      gl.bufferData(gl.ARRAY_BUFFER, markData.byteLength || 4, gl.DYNAMIC_DRAW);
+      gl.disable(gl.DEPTH_TEST);
+      gl.enable(gl.BLEND);
+      gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);
+    }
+
+    try {
+      initGL();
+    } catch (e) {
+      r.error = 'WebGL setup failed: ' + e.message;
+      return r;
+    }
+    r.ok = true;
+
+    canvas.addEventListener('webglcontextlost', function (e) {
+      e.preventDefault();  // without this the browser never restores the context
+      r.lost = true;
+      if (opts.onLost) opts.onLost();
+    });
+    canvas.addEventListener('webglcontextrestored', function () {
+      try {
+        initGL();
+        r.lost = false;
+        r.restores += 1;
+        if (opts.onRestored) opts.onRestored();
+      } catch (e) {
+        r.error = 'WebGL could not be restored: ' + e.message;
+        if (opts.onError) opts.onError(r.error);
+      }
+    });
+
+    // Size the arrays (and GPU buffers) for a scene; only grows.
+    r.setScene = function (cloth) {
+      const ne = cloth.n_edges, nv = cloth.n_verts;
+      if (ne > edgeCap) {
+        edgeCap = ne;
+        edgeData = new Float32Array(6 * ne);
+        gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
+        gl.bufferData(gl.ARRAY_BUFFER, edgeData.byteLength, gl.DYNAMIC_DRAW);
+      }
+      if (nv > markCap) {
+        markCap = nv;
+        markData = new Float32Array(3 * nv);
+        gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
+        gl.bufferData(gl.ARRAY_BUFFER, markData.byteLength, gl.DYNAMIC_DRAW);
+      }
+    };
+
+    // Fit the view box inside the canvas less a small inset, keeping aspect.
+    function fit() {
+      const bw = Math.max(view.x1 - view.x0, 1e-9), bh = Math.max(view.y1 - view.y0, 1e-9);
+      const inset = Math.min(16, r.cssWidth / 8, r.cssHeight / 8);
+      s = Math.max(Math.min((r.cssWidth - 2 * inset) / bw, (r.cssHeight - 2 * inset) / bh), 1e-9);
+      ox = r.cssWidth / 2 - s * (view.x0 + view.x1) / 2;
+      oy = r.cssHeight / 2 + s * (view.y0 + view.y1) / 2;
+    }
+
+    r.setView = function (box) { view = { x0: box.x0, x1: box.x1, y0: box.y0, y1: box.y1 }; fit(); };
+
+    // Match the drawing buffer to the canvas's CSS size times devicePixelRatio
+    // (pixel-exact when the browser reports device-pixel sizes).
+    r.resize = function (cssW, cssH, devW, devH) {
+      r.dpr = window.devicePixelRatio || 1;
+      r.cssWidth = Math.max(cssW, 1);
+      r.cssHeight = Math.max(cssH, 1);
+      const w = Math.max(1, devW || Math.round(r.cssWidth * r.dpr));
+      const h = Math.max(1, devH || Math.round(r.cssHeight * r.dpr));
+      if (canvas.width !== w) canvas.width = w;
+      if (canvas.height !== h) canvas.height = h;
+      fit();
+    };
+
+    r.pixelsPerMetre = function () { return s; };
+    // CSS pixels relative to the canvas's top-left corner.
+    r.toCanvas = function (x, y) { return [ox + s * x, oy - s * y]; };
+    r.toWorld = function (cx, cy) { return [(cx - ox) / s, (oy - cy) / s]; };
+
+    // The hot path: refill the arrays in place, upload, two draw calls.
+    r.draw = function (cloth, mode, scale) {
+      if (r.lost || gl.isContextLost()) return;
+      const ne = cloth.n_edges, nv = cloth.n_verts;
+      const pos = cloth.pos, ea = cloth.edge_a, eb = cloth.edge_b;
+      const ed = edgeData;
+      const stressMode = mode === 'stress';
+      if (stressMode) {
+        const q = cloth.stress;
+        for (let e = 0, o = 0; e < ne; e++, o += 6) {
+          const a = ea[e], b = eb[e];
+          ed[o] = pos[2 * a]; ed[o + 1] = pos[2 * a + 1];
+          ed[o + 2] = pos[2 * b]; ed[o + 3] = pos[2 * b + 1];
+          ed[o + 4] = q[a]; ed[o + 5] = q[b];
+        }
+      } else {
+        const diff = cloth.diff;
+        for (let e = 0, o = 0; e < ne; e++, o += 6) {
+          const a = ea[e], b = eb[e];
+          const v = Math.abs(diff[e]);
+          ed[o] = pos[2 * a]; ed[o + 1] = pos[2 * a + 1];
+          ed[o + 2] = pos[2 * b]; ed[o + 3] = pos[2 * b + 1];
+          ed[o + 4] = v; ed[o + 5] = v;
+        }
+      }
+      const pinned = cloth.pinned, held = cloth.held, md = markData;
+      let m = 0;
+      for (let k = 0; k < nv; k++) {
+        const p = pinned[k], h = held[k];
+        if (p === 0 && h === 0) continue;
+        md[3 * m] = pos[2 * k]; md[3 * m + 1] = pos[2 * k + 1];
+        md[3 * m + 2] = h === 0 ? 0 : (p === 0 ? 1 : 2);
+        m++;
+      }
+      nEdges = ne; nMarks = m;
+
+      const W = canvas.width, H = canvas.height, px = W / r.cssWidth;
+      gl.viewport(0, 0, W, H);
+      gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
+      gl.clear(gl.COLOR_BUFFER_BIT);
+      r.drawCalls = 0;
+
+      if (nEdges > 0) {
+        gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
+        gl.bufferSubData(gl.ARRAY_BUFFER, 0, edgeData.subarray(0, 6 * nEdges));
+        gl.useProgram(edgeProg.prog);
+        const u = edgeProg.u;
+        gl.uniform2f(u.u_scale, s * px, -s * px);
+        gl.uniform2f(u.u_offset, ox * px, oy * px);
+        gl.uniform2f(u.u_viewport, W, H);
+        gl.uniform1f(u.u_halfWidth, Math.max(EDGE_HALF_WIDTH_CSS * px, 1.0));
+        gl.uniform1f(u.u_mode, stressMode ? 1 : 0);
+        gl.uniform1f(u.u_invScale, scale > 1e-12 ? 1 / scale : 0);
+        gl.uniform1f(u.u_base, STRAIN_BASE);
+        gl.bindBuffer(gl.ARRAY_BUFFER, cornerBuf);
+        gl.enableVertexAttribArray(0);
+        gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
+        inst.divisor(0, 0);
+        gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
+        for (let i = 1; i <= 3; i++) { gl.enableVertexAttribArray(i); inst.divisor(i, 1); }
+        gl.vertexAttribPointer(1, 2, gl.FLOAT, false, 24, 0);
+        gl.vertexAttribPointer(2, 2, gl.FLOAT, false, 24, 8);
+        gl.vertexAttribPointer(3, 2, gl.FLOAT, false, 24, 16);
+        inst.draw(gl.TRIANGLE_STRIP, 0, 4, nEdges);
+        r.drawCalls++;
+        inst.divisor(3, 0);
+        gl.disableVertexAttribArray(3);
+      }
+      if (nMarks > 0) {
+        gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
+        gl.bufferSubData(gl.ARRAY_BUFFER, 0, markData.subarray(0, 3 * nMarks));
+        gl.useProgram(markProg.prog);
+        const u = markProg.u;
+        gl.uniform2f(u.u_scale, s * px, -s * px);
+        gl.uniform2f(u.u_offset, ox * px, oy * px);
+        gl.uniform2f(u.u_viewport, W, H);
+        gl.uniform1f(u.u_pinRadius, PIN_RADIUS_CSS * px);
+        gl.uniform1f(u.u_heldRadius, HELD_RADIUS_CSS * px);
+        gl.uniform1f(u.u_px, px);
+        gl.bindBuffer(gl.ARRAY_BUFFER, markCornerBuf);
+        gl.enableVertexAttribArray(0);
+        gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
+        inst.divisor(0, 0);
+        gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
+        gl.enableVertexAttribArray(1);
+        gl.enableVertexAttribArray(2);
+        inst.divisor(1, 1);
+        inst.divisor(2, 1);
+        gl.vertexAttribPointer(1, 2, gl.FLOAT, false, 12, 0);
+        gl.vertexAttribPointer(2, 1, gl.FLOAT, false, 12, 8);
+        inst.draw(gl.TRIANGLE_STRIP, 0, 4, nMarks);
+        r.drawCalls++;
+      }
+    };
+
+    // RGBA of the device pixel under canvas-relative CSS coordinates (tests only;
+    // valid right after draw() in the same task).
+    r.readPixel = function (cx, cy) {
+      const px = canvas.width / r.cssWidth;
+      const x = Math.floor(cx * px), y = canvas.height - 1 - Math.floor(cy * px);
+      const out = new Uint8Array(4);
+      gl.readPixels(x, y, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
+      return [out[0], out[1], out[2], out[3]];
+    };
+
+    return r;
+  }
+
+  return { create: create, STRAIN_BASE: STRAIN_BASE, BACKGROUND: BACKGROUND };
+})();

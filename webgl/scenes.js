@@ -1,0 +1,121 @@
+// Scene presets and the view that fits a scene.
+//
+// A preset turns the UI's parameters (grid size, iterations, substeps, gravity)
+// into the scene JSON the core reads, so a preset and a hand-written scene go
+// through the same clothCore.load(). View hints live beside the scene, never in
+// it: the core rejects keys it does not know.
+'use strict';
+
+window.clothScenes = (function () {
+  // Ranges the UI accepts; anything outside is clamped with a visible note.
+  const LIMITS = {
+    cols: { min: 1, max: 200, int: true, label: 'Columns' },
+    rows: { min: 1, max: 200, int: true, label: 'Rows' },
+    iterations: { min: 0, max: 200, int: true, label: 'Iterations' },
+    substeps: { min: 1, max: 16, int: true, label: 'Substeps' },
+    gravity: { min: -100, max: 100, int: false, label: 'Gravity' },
+    fullScale: { min: 0.0001, max: 1, int: false, label: 'Full-scale strain' },
+  };
+
+  // Each solver's own substeps and iterations (mirrors cloth/scene.py's
+  // solver_defaults): picking a solver in the UI starts from these.
+  const SOLVERS = {
+    xpbd: { label: 'XPBD + tethers', substeps: 8, iterations: 2 },
+    jakobsen: { label: 'Jakobsen (seed)', substeps: 1, iterations: 20 },
+  };
+  const DEFAULT_PARAMS = { solver: 'xpbd', substeps: 8, iterations: 2, gravity: -9.81 };
+
+  function topRow(cols, every) {
+    const pins = [];
+    for (let c = 0; c < cols; c += every) pins.push(c);
+    if (pins[pins.length - 1] !== cols - 1) pins.push(cols - 1);
+    return pins;
+  }
+
+  // size: the cloth's larger side in metres; the spacing follows from the grid.
+  const PRESETS = {
+    curtain: {
+      label: 'Curtain',
+      params: { cols: 40, rows: 30 },
+      size: 2.0,
+      pins: function (cols) { return topRow(cols, 4); },
+    },
+    corners: {
+      label: 'Two corners',
+      params: { cols: 30, rows: 30 },
+      size: 1.6,
+      pins: function (cols) { return cols > 1 ? [0, cols - 1] : [0]; },
+      sag: 0.45,
+    },
+    chain: {
+      label: 'Chain',
+      params: { cols: 40, rows: 1 },
+      size: 1.6,
+      pins: function () { return [0]; },
+      // A pendulum: it swings through the half-disc below its pin.
+      view: function (w, h) { const r = w + h; return { x0: -r, x1: r, y0: -r, y1: 0.15 * r }; },
+    },
+    large: {
+      label: 'Large cloth',
+      params: { cols: 100, rows: 100 },
+      size: 2.0,
+      pins: function (cols) { return topRow(cols, Math.max(1, Math.floor((cols - 1) / 4))); },
+    },
+  };
+
+  function spacingFor(preset, cols, rows) {
+    const cells = Math.max(cols - 1, rows - 1, 1);
+    return preset.size / cells;
+  }
+
+  // Returns {scene, view}; params must already be clamped.
+  function make(name, params) {
+    const preset = PRESETS[name];
+    if (!preset) throw new Error('unknown preset: ' + name);
+    const p = Object.assign({}, DEFAULT_PARAMS, preset.params, params || {});
+    const spacing = spacingFor(preset, p.cols, p.rows);
+    const scene = {
+      cols: p.cols,
+      rows: p.rows,
+      spacing: spacing,
+      pins: preset.pins(p.cols, p.rows),
+      gravity: [0, p.gravity],
+      dt: 1 / 60,
+      substeps: p.substeps,
+      iterations: p.iterations,
+      solver: p.solver,
+    };
+    const w = (p.cols - 1) * spacing, h = (p.rows - 1) * spacing;
+    const view = preset.view ? preset.view(w, h) : viewFor(scene, preset.sag);
+    return { scene: scene, view: view };
+  }
+
+  // The world box to fit for any scene: the flat grid (x right, y up, row 0 at
+  // y = 0), room below for it to sag, and a margin.
+  function viewFor(scene, sag) {
+    const cols = scene.cols | 0, rows = scene.rows | 0, s = +scene.spacing || 1;
+    const w = Math.max(cols - 1, 0) * s, h = Math.max(rows - 1, 0) * s;
+    const big = Math.max(w, h, s);
+    const margin = 0.08 * big;
+    const below = (sag === undefined ? 0.2 : sag) * big;
+    return { x0: -margin, x1: w + margin, y0: -h - below - margin, y1: margin };
+  }
+
+  // Clamp a UI value: returns {value, note} (note is '' when in range).
+  function clamp(key, raw) {
+    const lim = LIMITS[key];
+    let v = Number(raw);
+    if (!Number.isFinite(v)) {
+      return { value: null, note: lim.label + ': "' + raw + '" is not a number' };
+    }
+    let note = '';
+    if (lim.int && v !== Math.round(v)) { v = Math.round(v); note = lim.label + ' rounded to ' + v; }
+    if (v < lim.min) { v = lim.min; note = lim.label + ' clamped to its minimum ' + v; }
+    if (v > lim.max) { v = lim.max; note = lim.label + ' clamped to its maximum ' + v; }
+    return { value: v, note: note };
+  }
+
+  function defaults(name) { return Object.assign({}, DEFAULT_PARAMS, PRESETS[name].params); }
+
+  return { PRESETS: PRESETS, LIMITS: LIMITS, SOLVERS: SOLVERS, defaults: defaults, make: make, viewFor: viewFor, clamp: clamp };
+})();
