@@ -157,7 +157,7 @@ class Cloth:
         track = self.tolerance > 0.0
         for it in range(self.iterations):
             if self.use_xpbd:
-                worst = sweep_xpbd(pos, inv_mass, self.edge_a, self.edge_b, self.rest,
+                worst = sweep_xpbd(pos, self.prev, inv_mass, self.edge_a, self.edge_b, self.rest,
                                    self.lam, m, self.alpha, track)
             else:
                 worst = sweep_jakobsen(pos, inv_mass, self.edge_a, self.edge_b, self.rest,

@@ -1,0 +1,190 @@
+"""Deformation, picking, every action op, and degenerate geometry."""
+
+import json
+import math
+
+import pytest
+
+from helpers import scene, curtain, load, step, xy, result, all_finite
+from cloth.api import run
+
+
+def place(cloth, k, x, y):
+    cloth.pos[2 * k] = x
+    cloth.pos[2 * k + 1] = y
+
+
+def test_diff_and_stress_on_a_hand_computed_configuration():
+    # 2x2 grid, spacing 1; edges in order (0,1) (0,2) (1,3) (2,3).
+    cloth = load(scene(cols=2, rows=2, spacing=1.0))
+    assert [(cloth.edge_a[e], cloth.edge_b[e]) for e in range(4)] == [(0, 1), (0, 2), (1, 3), (2, 3)]
+    place(cloth, 0, 0.0, 0.0)
+    place(cloth, 1, 2.0, 0.0)      # (0,1): len 2, diff (2 - 1) / 2 = 0.5
+    place(cloth, 2, 0.0, -0.5)     # (0,2): len 0.5, diff (0.5 - 1) / 0.5 = -1
+    place(cloth, 3, 2.0, -2.0)     # (1,3): len 2, diff 0.5; (2,3): len 2.5, diff 0.6
+    cloth.measure()
+    assert list(cloth.diff) == pytest.approx([0.5, -1.0, 0.5, 0.6], abs=1e-15)
+    # Q = mean |diff| over each vertex's edges.
+    assert list(cloth.stress) == pytest.approx([0.75, 0.5, 0.8, 0.55], abs=1e-15)
+    assert cloth.max_diff == pytest.approx(1.0)
+    assert cloth.max_stress == pytest.approx(0.8)
+    assert cloth.max_strain == pytest.approx(1.5)       # len 2.5 / rest 1 - 1
+    rms = math.sqrt((0.25 + 1 + 0.25 + 0.36) / 4)
+    assert cloth.rms_diff == pytest.approx(rms)
+
+
+def test_run_reports_the_same_deformation():
+    actions = [{'frame': 0, 'op': 'grab', 'vertex': k, 'to': to}
+               for k, to in enumerate([[0, 0], [2, 0], [0, -0.5], [2, -2]])]
+    out = result(scene(cols=2, rows=2, spacing=1.0, actions=actions), 3)
+    assert out['frames'] == 3
+    assert out['edges'] == [[0, 1], [0, 2], [1, 3], [2, 3]]
+    assert out['positions'] == [[0, 0], [2, 0], [0, -0.5], [2, -2]]
+    assert out['edge_diff'] == pytest.approx([0.5, -1.0, 0.5, 0.6])
+    assert out['node_stress'] == pytest.approx([0.75, 0.5, 0.8, 0.55])
+
+
+def test_trace_holds_every_frame():
+    out = json.loads(run(scene(cols=2, rows=1, spacing=1.0, pins=[0]), 4, True))
+    assert len(out['trace']) == 4
+    assert out['trace'][-1] == out['positions']
+    assert 'trace' not in result(scene(cols=2, rows=1, spacing=1.0), 2)
+
+
+def test_nearest_vertex_within_radius():
+    cloth = load(scene(cols=3, rows=3, spacing=1.0))
+    assert cloth.nearest(1.1, -0.9, 0.5) == 4
+    assert cloth.nearest(2.0, -2.0, 0.01) == 8
+    assert cloth.nearest(5.0, 5.0, 1.0) == -1
+
+
+@pytest.mark.parametrize('solver', ['jakobsen', 'xpbd'])
+def test_grab_without_target_holds_in_place(solver):
+    actions = [{'frame': 3, 'op': 'grab', 'vertex': 8}]
+    first = load(curtain(3, solver=solver))
+    step(first, 3)
+    where = xy(first, 8)
+    out = result(curtain(3, solver=solver, actions=actions), 40)
+    assert tuple(out['positions'][8]) == where
+
+
+@pytest.mark.parametrize('solver', ['jakobsen', 'xpbd'])
+def test_grab_move_release_a_free_vertex(solver):
+    actions = [{'frame': 0, 'op': 'grab', 'vertex': 7, 'to': [0.3, -1.2]},
+               {'frame': 10, 'op': 'move', 'vertex': 7, 'to': [0.6, -1.5]}]
+    out = result(curtain(3, solver=solver, actions=actions), 10)
+    assert out['positions'][7] == [0.3, -1.2]
+    out = result(curtain(3, solver=solver, actions=actions), 30)
+    assert out['positions'][7] == [0.6, -1.5]
+    released = actions + [{'frame': 30, 'op': 'release', 'vertex': 7}]
+    out = result(curtain(3, solver=solver, actions=released), 31)
+    assert out['positions'][7] != [0.6, -1.5]      # it moves again
+    assert all_finite(sum(out['positions'], []))
+
+
+@pytest.mark.parametrize('solver', ['jakobsen', 'xpbd'])
+def test_dragged_pin_stays_pinned_where_left(solver):
+    actions = [{'frame': 0, 'op': 'grab', 'vertex': 2, 'to': [0.9, 0.2]},
+               {'frame': 5, 'op': 'move', 'vertex': 2, 'to': [1.4, 0.5]},
+               {'frame': 6, 'op': 'release', 'vertex': 2}]
+    out = result(curtain(3, solver=solver, actions=actions), 60)
+    assert out['positions'][2] == [1.4, 0.5]
+
+
+def test_actions_in_one_frame_apply_in_list_order():
+    actions = [{'frame': 2, 'op': 'grab', 'vertex': 0, 'to': [1, 1]},
+               {'frame': 2, 'op': 'move', 'vertex': 0, 'to': [2, 2]},
+               {'frame': 1, 'op': 'pin', 'vertex': 1}]
+    out = result(scene(cols=2, rows=1, spacing=1.0, actions=actions), 5)
+    assert out['positions'][0] == [2, 2]
+
+
+def test_pin_and_unpin():
+    cloth = load(scene(cols=2, rows=1, spacing=1.0, pins=[0]))
+    step(cloth, 20)
+    where = xy(cloth, 1)
+    cloth.pin(1)
+    step(cloth, 20)
+    assert xy(cloth, 1) == where
+    cloth.unpin(1)
+    step(cloth, 5)
+    assert xy(cloth, 1) != where
+    cloth.toggle_pin(1)
+    assert cloth.pinned[1] == 1 and cloth.inv_mass[1] == 0.0
+    cloth.toggle_pin(1)
+    assert cloth.pinned[1] == 0 and cloth.inv_mass[1] == 1.0
+
+
+def test_release_of_a_held_free_vertex_falls_exactly_from_rest():
+    cloth = load(scene(cols=1, rows=1, spacing=1.0, pins=[]))
+    cloth.grab(0, 0.5, 2.0)
+    step(cloth, 10)
+    assert xy(cloth, 0) == (0.5, 2.0)
+    cloth.release(0)
+    step(cloth, 30)
+    assert xy(cloth, 0)[1] == pytest.approx(2.0 - 0.5 * 9.81 * 0.25, rel=1e-12)
+
+
+@pytest.mark.parametrize('solver', ['jakobsen', 'xpbd'])
+def test_two_pinned_neighbours_dragged_onto_one_point(solver):
+    actions = [{'frame': 0, 'op': 'grab', 'vertex': 0, 'to': [0.5, 0.0]},
+               {'frame': 0, 'op': 'grab', 'vertex': 1, 'to': [0.5, 0.0]}]
+    out = result(curtain(4, solver=solver, actions=actions), 50)
+    flat = sum(out['positions'], []) + out['edge_diff'] + out['node_stress']
+    assert all_finite(flat)
+    assert out['edge_diff'][0] == -1.0     # the collapsed edge reads as fully compressed
+    assert out['positions'][0] == out['positions'][1] == [0.5, 0.0]
+
+
+@pytest.mark.parametrize('solver', ['jakobsen', 'xpbd'])
+def test_every_vertex_pinned_and_all_dragged_to_the_origin(solver):
+    n = 3
+    actions = [{'frame': 0, 'op': 'grab', 'vertex': k, 'to': [0, 0]} for k in range(n * n)]
+    out = result(curtain(n, solver=solver, actions=actions), 5)
+    assert all_finite(sum(out['positions'], []) + out['edge_diff'] + out['node_stress'])
+
+
+def test_one_by_one_grid():
+    out = result(scene(cols=1, rows=1, spacing=1.0), 10)
+    assert out['edges'] == [] and out['edge_diff'] == [] and out['node_stress'] == [0]
+
+
+@pytest.mark.parametrize('solver', ['jakobsen', 'xpbd'])
+def test_zero_iterations_is_free_fall(solver):
+    out = result(curtain(4, solver=solver, iterations=0), 30)
+    assert all_finite(sum(out['positions'], []))
+    assert out['positions'][15][1] == pytest.approx(-1.0 - 0.5 * 9.81 * 0.25, rel=1e-9)
+
+
+@pytest.mark.parametrize('solver', ['jakobsen', 'xpbd'])
+def test_huge_drag_stays_finite(solver):
+    actions = [{'frame': 1, 'op': 'grab', 'vertex': 15, 'to': [1e8, -1e8]},
+               {'frame': 3, 'op': 'release', 'vertex': 15}]
+    out = result(curtain(4, solver=solver, actions=actions), 60)
+    assert all_finite(sum(out['positions'], []) + out['edge_diff'] + out['node_stress'])
+
+
+def test_shear_diagonals_are_declared_edges():
+    plain = load(scene(cols=3, rows=3, spacing=1.0))
+    sheared = load(scene(cols=3, rows=3, spacing=1.0, shear=True))
+    assert sheared.n_edges == plain.n_edges + 4
+    assert sheared.rest[sheared.n_edges - 1] == pytest.approx(math.sqrt(2))
+    # A curtain pushed sideways keeps its cells square only with shear edges.
+    def mean_cell_area(cloth):
+        areas = []
+        for r in range(cloth.rows - 1):
+            for c in range(cloth.cols - 1):
+                k = r * cloth.cols + c
+                ax, ay = xy(cloth, k)
+                bx, by = xy(cloth, k + 1)
+                dx, dy = xy(cloth, k + cloth.cols)
+                areas.append(abs((bx - ax) * (dy - ay) - (by - ay) * (dx - ax)))
+        return sum(areas) / len(areas)
+    for shear, lo in [(False, 0.0), (True, 0.98)]:
+        cloth = load(curtain(6, gravity=[5.0, -9.81], damping=1.0, shear=shear))
+        step(cloth, 300)
+        area = mean_cell_area(cloth) / (0.2 * 0.2)
+        if shear:
+            assert area > lo
+        else:
+            assert area < 0.97       # the structural grid alone is a mechanism: it shears

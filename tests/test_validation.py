@@ -1,0 +1,158 @@
+"""Every validation error: a SceneError whose one-line message starts with the key."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from cloth.api import run
+from cloth.scene import SceneError
+
+ROOT = Path(__file__).resolve().parent.parent
+GOOD = {'cols': 3, 'rows': 2, 'spacing': 0.1}
+
+
+def with_keys(**keys):
+    s = dict(GOOD)
+    s.update(keys)
+    return json.dumps(s)
+
+
+def without(key):
+    s = dict(GOOD)
+    del s[key]
+    return json.dumps(s)
+
+
+def action(**keys):
+    a = {'frame': 0, 'op': 'grab', 'vertex': 0}
+    a.update(keys)
+    return with_keys(actions=[a])
+
+
+BAD = [
+    ('not json', 'scene:'),
+    ('', 'scene:'),
+    ('{"cols": 3, "rows": 2, "spacing": NaN}', 'scene:'),
+    ('{"cols": 3, "rows": 2, "spacing": Infinity}', 'scene:'),
+    ('{"cols": 3, "rows": 2, "spacing": 1e999}', 'spacing:'),
+    ('[1, 2]', 'scene:'),
+    ('"cloth"', 'scene:'),
+    ('null', 'scene:'),
+    (without('cols'), 'cols:'),
+    (without('rows'), 'rows:'),
+    (without('spacing'), 'spacing:'),
+    (with_keys(cols='3'), 'cols:'),
+    (with_keys(cols=2.5), 'cols:'),
+    (with_keys(cols=0), 'cols:'),
+    (with_keys(rows=-1), 'rows:'),
+    (with_keys(cols=True), 'cols:'),
+    (with_keys(cols=2000, rows=2000), 'cols:'),
+    (with_keys(spacing=0), 'spacing:'),
+    (with_keys(spacing=-0.1), 'spacing:'),
+    (with_keys(spacing=[1]), 'spacing:'),
+    (with_keys(pins=3), 'pins:'),
+    (with_keys(pins=[6]), 'pins:'),
+    (with_keys(pins=[-1]), 'pins:'),
+    (with_keys(pins=[0.5]), 'pins:'),
+    (with_keys(gravity=[0]), 'gravity:'),
+    (with_keys(gravity=[0, 'down']), 'gravity:'),
+    (with_keys(gravity=[0, 1e6]), 'gravity:'),
+    (with_keys(dt=0), 'dt:'),
+    (with_keys(dt=-0.01), 'dt:'),
+    (with_keys(dt=2), 'dt:'),
+    (with_keys(substeps=0), 'substeps:'),
+    (with_keys(substeps=1.5), 'substeps:'),
+    (with_keys(iterations=-1), 'iterations:'),
+    (with_keys(iterations=100000), 'iterations:'),
+    (with_keys(damping=-1), 'damping:'),
+    (with_keys(solver='verlet'), 'solver:'),
+    (with_keys(solver=3), 'solver:'),
+    (with_keys(tethers='yes'), 'tethers:'),
+    (with_keys(shear=1), 'shear:'),
+    (with_keys(compliance=-1e-6), 'compliance:'),
+    (with_keys(tolerance=2), 'tolerance:'),
+    (with_keys(name=5), 'name:'),
+    (with_keys(colour='red'), 'colour:'),
+    (with_keys(actions={}), 'actions:'),
+    (with_keys(actions=[3]), 'actions[0]:'),
+    (action(frame=-1), 'actions[0].frame:'),
+    (action(op='drag'), 'actions[0].op:'),
+    (action(vertex=6), 'actions[0].vertex:'),
+    (action(vertex='0'), 'actions[0].vertex:'),
+    (action(to=[1]), 'actions[0].to:'),
+    (action(to=[1, None]), 'actions[0].to:'),
+    (action(when=3), 'actions[0].when:'),
+    (action(op='move'), 'actions[0].to:'),
+    (action(op='pin', to=[0, 0]), 'actions[0].to:'),
+    (json.dumps(dict(GOOD, actions=[{'op': 'pin', 'vertex': 0}])), 'actions[0].frame:'),
+    (action(op='move', to=[0, 0]), 'actions:'),        # move of a vertex nobody holds
+    (action(op='release'), 'actions:'),
+]
+
+
+@pytest.mark.parametrize('text,key', BAD)
+def test_bad_scene_is_a_one_line_error_naming_the_key(text, key):
+    with pytest.raises(SceneError) as err:
+        run(text, 1)
+    message = str(err.value)
+    assert message.startswith(key)
+    assert '\n' not in message
+
+
+@pytest.mark.parametrize('frames', [-1, 2.5, 'ten', None, float('nan'), 10 ** 9])
+def test_bad_frame_count(frames):
+    with pytest.raises(SceneError, match='^frames:'):
+        run(json.dumps(GOOD), frames)
+
+
+def test_bad_vertex_in_a_direct_call():
+    from cloth.api import load
+    cloth = load(json.dumps(GOOD))
+    for k in [-1, 6, 2.5]:
+        with pytest.raises(SceneError, match='^vertex:'):
+            cloth.pin(k)
+    cloth.grab(0, 0, 0)
+    with pytest.raises(SceneError, match='^to:'):
+        cloth.move(0, float('nan'), 0)
+    with pytest.raises(SceneError, match='^vertex:'):
+        cloth.move(1, 0, 0)
+
+
+def cli(*args, stdin=None):
+    return subprocess.run([sys.executable, '-m', 'cloth', *args], cwd=ROOT, input=stdin,
+                          capture_output=True, text=True, timeout=60)
+
+
+def test_cli_prints_exactly_what_run_returns(tmp_path):
+    path = tmp_path / 'scene.json'
+    text = json.dumps(dict(GOOD, pins=[0, 2]))
+    path.write_text(text)
+    done = cli('run', str(path), '--frames', '7')
+    assert done.returncode == 0 and done.stderr == ''
+    assert done.stdout == run(text, 7) + '\n'
+    traced = cli('run', str(path), '--frames', '3', '--trace')
+    assert len(json.loads(traced.stdout)['trace']) == 3
+    piped = cli('run', '-', '--frames', '7', stdin=text)
+    assert piped.stdout == done.stdout
+
+
+@pytest.mark.parametrize('args,stdin,key', [
+    (['run', '-', '--frames', '-3'], json.dumps(GOOD), 'frames:'),
+    (['run', '-', '--frames', '5'], '{"cols": 3}', 'rows:'),
+    (['run', '-', '--frames', '5'], '{oops', 'scene:'),
+    (['run', '/no/such/scene.json', '--frames', '5'], None, 'scene:'),
+    (['run', '-', '--frames', 'x'], json.dumps(GOOD), 'argument --frames'),
+    (['run', '-'], json.dumps(GOOD), 'the following arguments are required: --frames'),
+    (['jump'], None, 'argument command'),
+])
+def test_cli_bad_input_is_one_line_and_nonzero(args, stdin, key):
+    done = cli(*args, stdin=stdin)
+    assert done.returncode == 2
+    assert done.stdout == ''
+    lines = done.stderr.strip().splitlines()
+    assert len(lines) == 1, done.stderr
+    assert 'Traceback' not in done.stderr
+    assert key in lines[0]
