@@ -88,7 +88,9 @@ def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, alpha, track):
         x_b += w_b d_lambda o / rest,  x_a -= w_a d_lambda o / rest,  alpha~ = compliance / h^2
     The accumulated lambda makes stiffness a material property (compliance, m/N) instead of a
     function of the iteration count; compliance 0 is an inextensible edge. Where the edge has
-    turned by more than ~84 degrees within the step, o says little: the current d is used."""
+    turned by more than 25 degrees within the step, or is more than 10% off its rest length,
+    the linearisation is poor, and the edge is projected along d onto its exact length."""
+    sqrt = math.sqrt
     worst = 0.0
     for e in range(m):
         a = edge_a[e]
@@ -105,24 +107,33 @@ def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, alpha, track):
         d2 = dx * dx + dy * dy
         if d2 < TINY2:
             continue
+        r = rest[e]
+        r2 = r * r
         ox = prev[ib] - prev[ia]
         oy = prev[ib + 1] - prev[ia + 1]
         do = dx * ox + dy * oy
-        if do * do < 0.01 * d2 * (ox * ox + oy * oy) or do <= 0.0:
+        if do * do > 0.81 * d2 * (ox * ox + oy * oy) and do > 0.0 and \
+                d2 < 1.21 * r2 and d2 > 0.81 * r2:
+            # The usual case: within 10% of rest and turned < 25 degrees in the step.
+            c = (d2 - r2) / (r + r)
+            dl = (-c - alpha * lam[e]) / (w * do / r2 + alpha)
+            s = dl / r
+        else:
+            # Far from rest or turned sharply (a drag, a teleport): the linearisation along o
+            # would under- or over-shoot, so project along d onto the exact length instead.
+            length = sqrt(d2)
+            c = length - r
+            dl = (-c - alpha * lam[e]) / (w + alpha)
+            s = dl / length
             ox = dx
             oy = dy
-            do = d2
-        r = rest[e]
-        c = (d2 - r * r) / (r + r)
         if track:
             q = c / r
             if q > worst:
                 worst = q
             elif -q > worst:
                 worst = -q
-        dl = (-c - alpha * lam[e]) / (w * do / (r * r) + alpha)
         lam[e] += dl
-        s = dl / r
         sa = s * wa
         sb = s * wb
         pos[ia] -= ox * sa

@@ -1,0 +1,189 @@
+"""The shipped JS is the tested Python: `clothCore.run` in dist/index.html and `run` in
+CPython return the same doubles, number for number, for every solver, feature and action."""
+
+import json
+import math
+import shutil
+import subprocess
+import sys
+
+import pytest
+from hypothesis import HealthCheck, given, settings, strategies as st
+
+from cloth.api import run
+from cloth.scene import SceneError
+
+from conftest import DIST, ROOT
+
+
+@pytest.fixture(scope='module')
+def core(browser):
+    """One page for the whole module: parity runs are pure, so they can share it."""
+    context = browser.new_context()
+    page = context.new_page()
+    page.goto(DIST.as_uri())
+    page.wait_for_function('window.clothCore && window.clothApp')
+    page.evaluate('clothApp.setPaused(true)')
+
+    def js_run(text, frames):
+        return page.evaluate(
+            '([t, f]) => { try { return {ok: clothCore.run(t, f)} }'
+            ' catch (e) { return {error: e instanceof Error ? e.message : String(e)} } }',
+            [text, frames])
+    yield js_run
+    context.close()
+
+
+def assert_identical(py_text, js_text):
+    py, js = json.loads(py_text), json.loads(js_text)
+    assert py.keys() == js.keys()
+    assert py['frames'] == js['frames']
+    assert py['edges'] == js['edges']
+    for key in ['positions', 'edge_diff', 'node_stress']:
+        a = flatten(py[key])
+        b = flatten(js[key])
+        assert len(a) == len(b), key
+        for i, (x, y) in enumerate(zip(a, b)):
+            # JSON.stringify prints 1.0 as 1: compare the parsed doubles, not the text. (It
+            # also drops the sign of -0.0, the one difference `==` cannot see.)
+            assert math.isfinite(x) and float(x) == float(y), (key, i, x, y)
+
+
+def flatten(values):
+    out = []
+    for v in values:
+        if isinstance(v, list):
+            out.extend(flatten(v))
+        else:
+            out.append(v)
+    return out
+
+
+def grid(cols, rows, **keys):
+    s = dict(cols=cols, rows=rows, spacing=1.0 / max(cols - 1, 1))
+    s.update(keys)
+    return s
+
+
+DRAG = [{'frame': 2, 'op': 'grab', 'vertex': 5, 'to': [0.4, -0.3]},
+        {'frame': 4, 'op': 'move', 'vertex': 5, 'to': [0.9, 0.2]},
+        {'frame': 5, 'op': 'grab', 'vertex': 0},
+        {'frame': 6, 'op': 'move', 'vertex': 0, 'to': [-0.3, 0.1]},
+        {'frame': 8, 'op': 'release', 'vertex': 0},
+        {'frame': 9, 'op': 'release', 'vertex': 5},
+        {'frame': 10, 'op': 'unpin', 'vertex': 3},
+        {'frame': 10, 'op': 'pin', 'vertex': 9}]
+
+SCENES = {
+    'seed-curtain': (grid(10, 10, pins=list(range(10)), solver='jakobsen'), 60),
+    'seed-corners-substeps-damping': (
+        grid(12, 9, pins=[0, 11], solver='jakobsen', substeps=3, iterations=7, damping=0.7), 40),
+    'seed-actions': (grid(4, 4, pins=[0, 3], solver='jakobsen', actions=DRAG), 30),
+    'seed-zero-iterations': (grid(5, 5, pins=[2], solver='jakobsen', iterations=0), 20),
+    'default-curtain': (grid(16, 12, pins=list(range(16))), 60),
+    'default-actions': (grid(4, 4, pins=[0, 3], actions=DRAG), 30),
+    'xpbd-compliance-shear': (
+        grid(9, 7, pins=[0, 8], solver='xpbd', compliance=1e-3, shear=True,
+             gravity=[2.0, -20.0]), 50),
+    'xpbd-no-tethers-tolerance': (
+        grid(8, 8, pins=[0, 7], solver='xpbd', tethers=False, tolerance=1e-3,
+             iterations=6, substeps=2), 50),
+    'xpbd-no-pins': (grid(6, 3, solver='xpbd', gravity=[0.5, -3.0], damping=5.0), 30),
+    'chain-1x40': (dict(cols=1, rows=40, spacing=0.05, pins=[0], dt=0.01), 80),
+    'one-vertex': (dict(cols=1, rows=1, spacing=1.0, gravity=[1.0, -9.81]), 30),
+    'large-dt-gravity': (grid(6, 6, pins=[0, 5], dt=0.25, gravity=[0, -981.0]), 20),
+    'collapsed-pins': (grid(4, 3, pins=[0, 1], actions=[
+        {'frame': 0, 'op': 'grab', 'vertex': 0, 'to': [0.5, 0.5]},
+        {'frame': 0, 'op': 'grab', 'vertex': 1, 'to': [0.5, 0.5]}]), 20),
+    'teleport': (grid(5, 5, pins=[0, 4], actions=[
+        {'frame': 1, 'op': 'grab', 'vertex': 22, 'to': [100.0, -100.0]},
+        {'frame': 2, 'op': 'release', 'vertex': 22}]), 40),
+}
+
+
+@pytest.mark.parametrize('name', sorted(SCENES))
+def test_bit_identical_results(core, name):
+    scene, frames = SCENES[name]
+    text = json.dumps(scene)
+    js = core(text, frames)
+    assert 'ok' in js, js
+    assert_identical(run(text, frames), js['ok'])
+
+
+def test_larger_grid_many_frames(core):
+    text = json.dumps(grid(40, 30, pins=[0, 13, 26, 39]))
+    assert_identical(run(text, 20), core(text, 20)['ok'])
+
+
+@pytest.mark.parametrize('text,frames', [
+    ('{"cols": 3', 1), ('[]', 1), ('{"cols": 2, "rows": 2, "spacing": 0}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "pins": [9]}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "solver": "magic"}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1}', -1),
+])
+def test_same_error_message_in_both_runtimes(core, text, frames):
+    with pytest.raises(SceneError) as err:
+        run(text, frames)
+    assert core(text, frames) == {'error': str(err.value)}
+
+
+# ---- property-based: random small scenes and action sequences -------------------------------
+
+@st.composite
+def scenes(draw):
+    cols = draw(st.integers(1, 6))
+    rows = draw(st.integers(1, 6))
+    n = cols * rows
+    vertex = st.integers(0, n - 1)
+    coord = st.floats(-3, 3, allow_nan=False, width=64)
+    s = {'cols': cols, 'rows': rows, 'spacing': draw(st.sampled_from([0.05, 0.1, 0.25, 1.0])),
+         'pins': draw(st.lists(vertex, max_size=3))}
+    if draw(st.booleans()):
+        s['solver'] = draw(st.sampled_from(['jakobsen', 'xpbd']))
+    for key, strategy in [('substeps', st.integers(1, 4)), ('iterations', st.integers(0, 8)),
+                          ('damping', st.floats(0, 3)), ('tethers', st.booleans()),
+                          ('shear', st.booleans()), ('compliance', st.sampled_from([0, 1e-4, 0.01])),
+                          ('tolerance', st.sampled_from([0, 1e-3])),
+                          ('gravity', st.tuples(coord, st.floats(-30, 30)).map(list))]:
+        if draw(st.booleans()):
+            s[key] = draw(strategy)
+    actions, held = [], set()
+    for _ in range(draw(st.integers(0, 8))):
+        frame = draw(st.integers(0, 12))
+        op = draw(st.sampled_from(['grab', 'move', 'release', 'pin', 'unpin']))
+        k = draw(vertex)
+        if op in ('move', 'release') and held:
+            k = draw(st.sampled_from(sorted(held)))
+        a = {'frame': frame, 'op': op, 'vertex': k}
+        if op == 'move' or (op == 'grab' and draw(st.booleans())):
+            a['to'] = [draw(coord), draw(coord)]
+        actions.append(a)
+    s['actions'] = actions
+    return s
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(scene=scenes(), frames=st.integers(0, 15))
+def test_random_scenes_are_bit_identical(core, scene, frames):
+    text = json.dumps(scene)
+    try:
+        py = run(text, frames)
+    except SceneError as err:       # e.g. a random move of a vertex nobody holds
+        assert core(text, frames) == {'error': str(err)}
+        return
+    js = core(text, frames)
+    assert 'ok' in js, js
+    assert_identical(py, js['ok'])
+
+
+# ---- the shipped dist/ is reproducible from a clean clone ----------------------------------
+
+def test_clean_clone_rebuilds_byte_identical_dist(tmp_path):
+    if not (ROOT / '.git').exists():
+        pytest.fail('not a git checkout: cannot make a clean clone')
+    clone = tmp_path / 'clone'
+    subprocess.run(['git', 'clone', '-q', str(ROOT), str(clone)], check=True, timeout=120)
+    committed = (clone / 'dist' / 'index.html').read_bytes()
+    subprocess.run([sys.executable, 'build.py'], cwd=clone, check=True, timeout=300,
+                   capture_output=True)
+    assert (clone / 'dist' / 'index.html').read_bytes() == committed
