@@ -111,12 +111,12 @@ def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, alpha, track):
         r2 = r * r
         ox = prev[ib] - prev[ia]
         oy = prev[ib + 1] - prev[ia + 1]
-        do = dx * ox + dy * oy
-        if do * do > 0.81 * d2 * (ox * ox + oy * oy) and do > 0.0 and \
+        dot = dx * ox + dy * oy
+        if dot * dot > 0.81 * d2 * (ox * ox + oy * oy) and dot > 0.0 and \
                 d2 < 1.21 * r2 and d2 > 0.81 * r2:
             # The usual case: within 10% of rest and turned < 25 degrees in the step.
             c = (d2 - r2) / (r + r)
-            dl = (-c - alpha * lam[e]) / (w * do / r2 + alpha)
+            dl = (-c - alpha * lam[e]) / (w * dot / r2 + alpha)
             s = dl / r
         else:
             # Far from rest or turned sharply (a drag, a teleport): the linearisation along o

@@ -22,7 +22,7 @@ def core(browser):
     context = browser.new_context()
     page = context.new_page()
     page.goto(DIST.as_uri())
-    page.wait_for_function('window.clothCore && window.clothApp')
+    page.wait_for_function('() => !!(window.clothCore && window.clothApp)')
     page.evaluate('clothApp.setPaused(true)')
 
     def js_run(text, frames):
