@@ -6,7 +6,7 @@ returns, and the parity tests compare its CPython and browser results number for
 
 from cloth.host import to_json, kind_of, is_finite
 from cloth.scene import parse_scene, SceneError, fail, MAX_FRAMES
-from cloth.sim import Cloth
+from cloth.sim import Cloth, frame, measure, grab, move, release, pin, unpin
 
 # A trace holds frames x vertices points; past this it would be gigabytes of JSON.
 MAX_TRACE_POINTS = 20000000
@@ -29,17 +29,17 @@ def apply_action(cloth, action):
     k = action.vertex
     if op == 'grab':
         if action.has_to:
-            cloth.grab(k, action.to_x, action.to_y)
+            grab(cloth, k, action.to_x, action.to_y)
         else:
-            cloth.grab(k, cloth.pos[k + k], cloth.pos[k + k + 1])
+            grab(cloth, k, cloth.pos[k + k], cloth.pos[k + k + 1])
     elif op == 'move':
-        cloth.move(k, action.to_x, action.to_y)
+        move(cloth, k, action.to_x, action.to_y)
     elif op == 'release':
-        cloth.release(k)
+        release(cloth, k)
     elif op == 'pin':
-        cloth.pin(k)
+        pin(cloth, k)
     elif op == 'unpin':
-        cloth.unpin(k)
+        unpin(cloth, k)
 
 
 def positions_of(cloth):
@@ -55,7 +55,7 @@ def simulate(cloth, frames, trace):
         while next_action < len(actions) and actions[next_action].frame <= f:
             apply_action(cloth, actions[next_action])
             next_action += 1
-        cloth.frame()
+        frame(cloth)
         if trace is not None:
             trace.append(positions_of(cloth))
 
@@ -68,7 +68,7 @@ def run(scene_json_text, frames, with_trace=False):
         fail('frames: a trace of frames x vertices must be at most 20000000 points')
     trace = [] if with_trace else None
     simulate(cloth, frames, trace)
-    cloth.measure()
+    measure(cloth)
     m = cloth.n_edges
     result = {
         'frames': frames,

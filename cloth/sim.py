@@ -58,7 +58,7 @@ class Cloth:
             self.pinned[scene.pins[i]] = 1
         for k in range(n):
             self.inv_mass[k] = 0.0 if self.pinned[k] == 1 else 1.0
-            self.rest_at(k)
+            rest_at(self, k)
 
         self.build_edges(scene.shear)
         self.lam = f64(self.n_edges)
@@ -133,125 +133,174 @@ class Cloth:
         self.rest[e] = rest
         return e + 1
 
-    # ---- the step ------------------------------------------------------------------------
-
+    # Conveniences for callers outside the hot path (tests, the page's input handlers). Each
+    # Transcrypt method call allocates, so per-frame callers use the module functions below.
     def frame(self):
-        """Advance one frame: `substeps` steps of dt / substeps each."""
-        if self.use_tethers and self.anchors_stale:
-            find_anchors(self.n_verts, self.adj_start, self.adj_vertex, self.adj_rest,
-                         self.inv_mass, self.anchor, self.tether)
-            self.anchors_stale = False
-        for s in range(self.substeps):
-            self.step()
-        self.frames_done += 1
-
-    def step(self):
-        """One step of size h: predict by Verlet, then relax the constraints."""
-        n = self.n_verts
-        m = self.n_edges
-        pos = self.pos
-        inv_mass = self.inv_mass
-        integrate(pos, self.prev, inv_mass, n, self.keep, self.ax, self.ay)
-        if self.use_xpbd:
-            clear(self.lam, m)
-        track = self.tolerance > 0.0
-        for it in range(self.iterations):
-            if self.use_xpbd:
-                worst = sweep_xpbd(pos, self.prev, inv_mass, self.edge_a, self.edge_b, self.rest,
-                                   self.lam, m, self.alpha, track)
-            else:
-                worst = sweep_jakobsen(pos, inv_mass, self.edge_a, self.edge_b, self.rest,
-                                       m, track)
-            self.projections += m
-            if self.use_tethers:
-                project_tethers(pos, inv_mass, self.anchor, self.tether, n)
-                self.projections += n
-            # The sweep measured the error it found before correcting: once that is within
-            # tolerance the cloth is converged and further sweeps would be wasted.
-            if track and worst <= self.tolerance:
-                break
-
-    # ---- holding, pinning ----------------------------------------------------------------
-
-    def check_vertex(self, k):
-        if not (k >= 0 and k < self.n_verts and math.floor(k) == k):
-            raise SceneError('vertex: must be an index from 0 to cols * rows - 1')
-
-    def rest_at(self, k):
-        """Zero velocity for vertex k, with the previous position set so that a free fall
-        from here is exact: x* = x + a h^2 / 2 gives x(t) = x + a t^2 / 2 at every step."""
-        i = k + k
-        if self.inv_mass[k] == 0.0:
-            self.prev[i] = self.pos[i]
-            self.prev[i + 1] = self.pos[i + 1]
-        else:
-            self.prev[i] = self.pos[i] + 0.5 * self.ax
-            self.prev[i + 1] = self.pos[i + 1] + 0.5 * self.ay
-
-    def refresh(self, k):
-        """inv_mass follows pinned and held; the tether anchors follow the fixed set."""
-        fixed = self.pinned[k] == 1 or self.held[k] == 1
-        was_fixed = self.inv_mass[k] == 0.0
-        self.inv_mass[k] = 0.0 if fixed else 1.0
-        if fixed != was_fixed:
-            self.anchors_stale = True
-        self.rest_at(k)
-
-    def grab(self, k, x, y):
-        """Hold vertex k fixed at (x, y)."""
-        self.check_vertex(k)
-        self.held[k] = 1
-        self.place(k, x, y)
-        self.refresh(k)
-
-    def move(self, k, x, y):
-        """Move a held vertex to (x, y); it stays fixed there."""
-        self.check_vertex(k)
-        if self.held[k] == 0:
-            raise SceneError('vertex: move needs a held vertex (grab it first)')
-        self.place(k, x, y)
-        self.refresh(k)
-
-    def release(self, k):
-        """Let go: a pinned vertex stays pinned where it was left, a free one falls from rest."""
-        self.check_vertex(k)
-        self.held[k] = 0
-        self.refresh(k)
-
-    def pin(self, k):
-        self.check_vertex(k)
-        self.pinned[k] = 1
-        self.refresh(k)
-
-    def unpin(self, k):
-        self.check_vertex(k)
-        self.pinned[k] = 0
-        self.refresh(k)
-
-    def toggle_pin(self, k):
-        self.check_vertex(k)
-        if self.pinned[k] == 1:
-            self.unpin(k)
-        else:
-            self.pin(k)
-
-    def place(self, k, x, y):
-        if not (x > -1e9 and x < 1e9 and y > -1e9 and y < 1e9):
-            raise SceneError('to: must be finite and within 1e9 of the origin')
-        self.pos[k + k] = x
-        self.pos[k + k + 1] = y
-
-    # ---- queries --------------------------------------------------------------------------
+        frame(self)
 
     def measure(self):
-        """Fill `diff` (per edge) and `stress` (per vertex) and the summary numbers."""
-        deformation(self.pos, self.edge_a, self.edge_b, self.rest, self.n_edges, self.degree,
-                    self.n_verts, self.diff, self.stress, self.stats)
-        self.max_diff = self.stats[0]
-        self.rms_diff = self.stats[1]
-        self.max_stress = self.stats[2]
-        self.max_strain = self.stats[3]
-        self.rms_strain = self.stats[4]
+        measure(self)
+
+    def grab(self, k, x, y):
+        grab(self, k, x, y)
+
+    def move(self, k, x, y):
+        move(self, k, x, y)
+
+    def release(self, k):
+        release(self, k)
+
+    def pin(self, k):
+        pin(self, k)
+
+    def unpin(self, k):
+        unpin(self, k)
+
+    def toggle_pin(self, k):
+        toggle_pin(self, k)
 
     def nearest(self, x, y, radius):
-        return nearest_vertex(self.pos, self.n_verts, x, y, radius)
+        return nearest(self, x, y, radius)
+
+
+# ---- the step -----------------------------------------------------------------------------
+#
+# Operations are module functions taking the cloth, not methods: a Transcrypt method call
+# binds a fresh closure and two arrays on every call, and the hot path must not allocate.
+
+
+def frame(cloth):
+    """Advance one frame: `substeps` steps of dt / substeps each."""
+    if cloth.use_tethers and cloth.anchors_stale:
+        find_anchors(cloth.n_verts, cloth.adj_start, cloth.adj_vertex, cloth.adj_rest,
+                     cloth.inv_mass, cloth.anchor, cloth.tether)
+        cloth.anchors_stale = False
+    for s in range(cloth.substeps):
+        step(cloth)
+    cloth.frames_done += 1
+
+
+def step(cloth):
+    """One step of size h: predict by Verlet, then relax the constraints."""
+    n = cloth.n_verts
+    m = cloth.n_edges
+    pos = cloth.pos
+    inv_mass = cloth.inv_mass
+    integrate(pos, cloth.prev, inv_mass, n, cloth.keep, cloth.ax, cloth.ay)
+    if cloth.use_xpbd:
+        clear(cloth.lam, m)
+    track = cloth.tolerance > 0.0
+    for it in range(cloth.iterations):
+        if cloth.use_xpbd:
+            worst = sweep_xpbd(pos, cloth.prev, inv_mass, cloth.edge_a, cloth.edge_b, cloth.rest,
+                               cloth.lam, m, cloth.alpha, track)
+        else:
+            worst = sweep_jakobsen(pos, inv_mass, cloth.edge_a, cloth.edge_b, cloth.rest,
+                                   m, track)
+        cloth.projections += m
+        if cloth.use_tethers:
+            project_tethers(pos, inv_mass, cloth.anchor, cloth.tether, n)
+            cloth.projections += n
+        # The sweep measured the error it found before correcting: once that is within
+        # tolerance the cloth is converged and further sweeps would be wasted.
+        if track and worst <= cloth.tolerance:
+            break
+
+
+# ---- holding, pinning ---------------------------------------------------------------------
+
+
+def check_vertex(cloth, k):
+    if not (k >= 0 and k < cloth.n_verts and math.floor(k) == k):
+        raise SceneError('vertex: must be an index from 0 to cols * rows - 1')
+
+
+def rest_at(cloth, k):
+    """Zero velocity for vertex k, with the previous position set so that a free fall
+    from here is exact: x* = x + a h^2 / 2 gives x(t) = x + a t^2 / 2 at every step."""
+    i = k + k
+    if cloth.inv_mass[k] == 0.0:
+        cloth.prev[i] = cloth.pos[i]
+        cloth.prev[i + 1] = cloth.pos[i + 1]
+    else:
+        cloth.prev[i] = cloth.pos[i] + 0.5 * cloth.ax
+        cloth.prev[i + 1] = cloth.pos[i + 1] + 0.5 * cloth.ay
+
+
+def refresh(cloth, k):
+    """inv_mass follows pinned and held; the tether anchors follow the fixed set."""
+    fixed = cloth.pinned[k] == 1 or cloth.held[k] == 1
+    was_fixed = cloth.inv_mass[k] == 0.0
+    cloth.inv_mass[k] = 0.0 if fixed else 1.0
+    if fixed != was_fixed:
+        cloth.anchors_stale = True
+    rest_at(cloth, k)
+
+
+def grab(cloth, k, x, y):
+    """Hold vertex k fixed at (x, y)."""
+    check_vertex(cloth, k)
+    cloth.held[k] = 1
+    place(cloth, k, x, y)
+    refresh(cloth, k)
+
+
+def move(cloth, k, x, y):
+    """Move a held vertex to (x, y); it stays fixed there."""
+    check_vertex(cloth, k)
+    if cloth.held[k] == 0:
+        raise SceneError('vertex: move needs a held vertex (grab it first)')
+    place(cloth, k, x, y)
+    refresh(cloth, k)
+
+
+def release(cloth, k):
+    """Let go: a pinned vertex stays pinned where it was left, a free one falls from rest."""
+    check_vertex(cloth, k)
+    cloth.held[k] = 0
+    refresh(cloth, k)
+
+
+def pin(cloth, k):
+    check_vertex(cloth, k)
+    cloth.pinned[k] = 1
+    refresh(cloth, k)
+
+
+def unpin(cloth, k):
+    check_vertex(cloth, k)
+    cloth.pinned[k] = 0
+    refresh(cloth, k)
+
+
+def toggle_pin(cloth, k):
+    check_vertex(cloth, k)
+    if cloth.pinned[k] == 1:
+        unpin(cloth, k)
+    else:
+        pin(cloth, k)
+
+
+def place(cloth, k, x, y):
+    if not (x > -1e9 and x < 1e9 and y > -1e9 and y < 1e9):
+        raise SceneError('to: must be finite and within 1e9 of the origin')
+    cloth.pos[k + k] = x
+    cloth.pos[k + k + 1] = y
+
+
+# ---- queries -------------------------------------------------------------------------------
+
+
+def measure(cloth):
+    """Fill `diff` (per edge) and `stress` (per vertex) and the summary numbers."""
+    deformation(cloth.pos, cloth.edge_a, cloth.edge_b, cloth.rest, cloth.n_edges, cloth.degree,
+                cloth.n_verts, cloth.diff, cloth.stress, cloth.stats)
+    cloth.max_diff = cloth.stats[0]
+    cloth.rms_diff = cloth.stats[1]
+    cloth.max_stress = cloth.stats[2]
+    cloth.max_strain = cloth.stats[3]
+    cloth.rms_strain = cloth.stats[4]
+
+
+def nearest(cloth, x, y, radius):
+    return nearest_vertex(cloth.pos, cloth.n_verts, x, y, radius)
