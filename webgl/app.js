@@ -304,9 +304,13 @@
       const ro = new ResizeObserver(function (entries) {
         const e = entries[entries.length - 1];
         const css = e.contentBoxSize && e.contentBoxSize[0];
-        const dev = e.devicePixelContentBoxSize && e.devicePixelContentBoxSize[0];
+        let dev = e.devicePixelContentBoxSize && e.devicePixelContentBoxSize[0];
         const w = css ? css.inlineSize : e.contentRect.width;
         const h = css ? css.blockSize : e.contentRect.height;
+        // Emulated device scale factors (devtools, test drivers) are not reflected
+        // in the device-pixel box: trust it only when it agrees with CSS size * dpr.
+        const dpr = window.devicePixelRatio || 1;
+        if (dev && (Math.abs(dev.inlineSize - w * dpr) > 1 || Math.abs(dev.blockSize - h * dpr) > 1)) dev = null;
         renderer.resize(w, h, dev ? dev.inlineSize : 0, dev ? dev.blockSize : 0);
         s.dirty = true;
         render();  // same task as the resize: no blank frame

@@ -1,0 +1,169 @@
+"""Pointer input in a real browser: mouse, right-click pins, touch, devicePixelRatio 2."""
+import pytest
+
+from browser_helpers import free_vertex, near
+
+COLS, ROWS = 40, 30      # the default preset (curtain)
+TOL = 0.01               # CSS pixels: the held vertex sits exactly under the pointer
+
+
+def settle(pg, frames=240):
+    """Let the scene come to rest so that a vertex stays where state() saw it."""
+    pg.js('(n) => clothApp.advance(n)', frames)
+
+
+def drag_and_check(pg, k, path):
+    """Press on vertex k (paused, so that it is where state() says), check that the
+    nearest vertex was grabbed, then resume and move along path (client coords): after
+    each move, with the simulation running, the held vertex must sit under the pointer."""
+    was_paused = pg.info()['paused']
+    pg.js('clothApp.setPaused(true)')
+    st = pg.state()
+    start = st['screen'][k]
+    pg.mouse.move(start[0], start[1])
+    pg.mouse.down()
+    held = [i for i, h in enumerate(pg.state()['held']) if h]
+    d2 = [(sx - start[0]) ** 2 + (sy - start[1]) ** 2 for sx, sy in st['screen']]
+    assert len(held) == 1 and d2[held[0]] == min(d2), (held, k)
+    k = held[0]
+    pg.js('(p) => clothApp.setPaused(p)', was_paused)
+    for x, y in path:
+        pg.mouse.move(x, y, steps=4)
+        pg.wait_for_timeout(60)  # a few animation frames of simulation while held
+        st = pg.state()
+        assert st['held'][k]
+        assert near(st['screen'][k], (x, y), TOL), (st['screen'][k], (x, y))
+    pg.mouse.up()
+    return k
+
+
+def test_mouse_drag_holds_vertex_under_cursor_then_releases(open_page):
+    pg = open_page()
+    settle(pg)
+    st = pg.state()
+    k = free_vertex(st, COLS, ROWS)
+    x, y = st['screen'][k]
+    k = drag_and_check(pg, k, [(x + 80, y + 40), (x - 150, y + 60), (x - 20, y - 200)])
+    st = pg.state()
+    assert not st['held'][k] and not st['pinned'][k]
+    pg.wait_for_function('clothApp.info().frames > 0')
+    before = st['positions'][k]
+    pg.js('clothApp.advance(30)')
+    assert pg.state()['positions'][k] != before  # free again: it falls
+
+
+def test_right_click_pins_and_the_vertex_holds_still(open_page):
+    pg = open_page()
+    settle(pg)
+    pg.js('clothApp.setPaused(true)')
+    st = pg.state()
+    x, y = st['screen'][15 * COLS + 18]
+    pg.mouse.click(x, y, button='right')
+    after = pg.state()
+    changed = [i for i, (p, q) in enumerate(zip(st['pinned'], after['pinned'])) if p != q]
+    assert len(changed) == 1 and after['pinned'][changed[0]]
+    k = changed[0]
+    where = after['positions'][k]
+    pg.js('clothApp.setPaused(false)')
+    pg.wait_for_timeout(300)  # the loop runs
+    pg.js('clothApp.advance(120)')
+    assert pg.state()['positions'][k] == where
+    # a second right-click unpins it
+    x, y = pg.state()['screen'][k]
+    pg.mouse.click(x, y, button='right')
+    assert not pg.state()['pinned'][k]
+
+
+def test_pinned_vertex_dragged_elsewhere_stays_there(open_page):
+    pg = open_page()
+    st = pg.state()
+    k = 0  # top-left corner, pinned in the curtain
+    assert st['pinned'][k]
+    x, y = st['screen'][k]
+    target = (x + 120, y + 90)
+    drag_and_check(pg, k, [target])
+    pg.js('clothApp.advance(120)')
+    st = pg.state()
+    assert st['pinned'][k] and not st['held'][k]
+    assert near(st['screen'][k], target, TOL)
+
+
+def touch(cdp, kind, points):
+    cdp.send('Input.dispatchTouchEvent',
+             {'type': kind, 'touchPoints': [{'x': x, 'y': y} for x, y in points]})
+
+
+def test_touch_drag_and_double_tap_pin(open_page):
+    pg = open_page(has_touch=True)
+    settle(pg)
+    st = pg.state()
+    k = free_vertex(st, COLS, ROWS)
+    x, y = st['screen'][k]
+    cdp = pg.context.new_cdp_session(pg.page)
+    pg.js('clothApp.setPaused(true)')
+    touch(cdp, 'touchStart', [(x, y)])
+    held = [i for i, h in enumerate(pg.state()['held']) if h]
+    assert len(held) == 1
+    k = held[0]
+    pg.js('clothApp.setPaused(false)')
+    for i in range(1, 9):
+        px, py = x + 12 * i, y - 9 * i
+        touch(cdp, 'touchMove', [(px, py)])
+    pg.wait_for_timeout(80)
+    st = pg.state()
+    assert st['held'][k] and near(st['screen'][k], (px, py), TOL)
+    touch(cdp, 'touchEnd', [])
+    assert not pg.state()['held'][k]
+
+    # double-tap toggles the pin of the vertex under the finger
+    pg.js('clothApp.setPaused(true)')
+    before = pg.state()['pinned']
+    x, y = pg.state()['screen'][free_vertex(pg.state(), COLS, ROWS) - 3]
+    for kind in ('touchStart', 'touchEnd', 'touchStart', 'touchEnd'):  # back to back
+        touch(cdp, kind, [(x, y)] if kind == 'touchStart' else [])
+    changed = [i for i, (a, b) in enumerate(zip(before, pg.state()['pinned'])) if a != b]
+    assert len(changed) == 1 and pg.state()['pinned'][changed[0]]
+
+
+def test_device_pixel_ratio_2_is_sharp_and_exact(open_page):
+    pg = open_page(device_scale_factor=2)
+    settle(pg)
+    size = pg.js('() => { const c = document.getElementById("view");'
+                 ' const r = c.getBoundingClientRect(); return [c.width, c.height, r.width, r.height]; }')
+    assert size[0] == round(2 * size[2]) and size[1] == round(2 * size[3])
+    st = pg.state()
+    k = free_vertex(st, COLS, ROWS)
+    x, y = st['screen'][k]
+    drag_and_check(pg, k, [(x + 33.5, y - 41.5), (x - 60, y + 20)])
+
+
+def test_window_resize_resizes_the_canvas_and_refits(open_page):
+    pg = open_page()
+    w0 = pg.js('document.getElementById("view").width')
+    pg.set_viewport_size({'width': 1300, 'height': 800})
+    pg.wait_for_function('(w) => document.getElementById("view").width !== w', arg=w0)
+    size = pg.js('() => { const c = document.getElementById("view");'
+                 ' return [c.width, c.getBoundingClientRect().width]; }')
+    assert size[0] == round(size[1])
+    # the cloth still lies inside the canvas
+    box = pg.js('() => document.getElementById("view").getBoundingClientRect().toJSON()')
+    for sx, sy in pg.state()['screen']:
+        assert box['left'] <= sx <= box['right'] and box['top'] <= sy <= box['bottom']
+
+
+@pytest.mark.parametrize('key,expect', [(' ', 'paused'), ('c', 'stress'), ('a', 'fixed'), ('h', 'help')])
+def test_keyboard_shortcuts(open_page, key, expect):
+    pg = open_page()
+    pg.locator('#view').click(position={'x': 5, 'y': 5})
+    pg.keyboard.press('Space' if key == ' ' else key)
+    info = pg.info()
+    if expect == 'paused':
+        assert info['paused'] and pg.locator('#r-paused').is_visible()
+    elif expect == 'stress':
+        assert info['mode'] == 'stress'
+    elif expect == 'fixed':
+        assert info['scaleMode'] == 'fixed'
+    else:
+        assert pg.locator('#help').is_visible()
+        pg.keyboard.press('Escape')
+        assert pg.locator('#help').is_hidden()

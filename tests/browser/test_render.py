@@ -1,0 +1,146 @@
+"""Pixels from the real WebGL renderer (SwiftShader colours are exact), context loss,
+the WebGL 1 path and the no-WebGL message."""
+import json
+
+import pytest
+
+# Four vertices in a row, 1 m apart, all pinned, no gravity: nothing moves unless dragged.
+ROW = {'cols': 4, 'rows': 1, 'spacing': 1.0, 'pins': [0, 1, 2, 3], 'gravity': [0, 0],
+       'solver': 'jakobsen'}
+BASE = 0.3          # renderer.js STRAIN_BASE: the red of an unstrained edge
+BACKGROUND_MAX = 30  # every background channel is below this
+
+
+def stretched_row(pg, lift_px=60, drag_px=0):
+    """Load ROW, then drag the pinned end vertex 3 up (and right): edge 2-3 stretches,
+    edges 0-1 and 1-2 keep their rest length. Returns state()."""
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps(ROW))
+    pg.js('clothApp.setPaused(true)')
+    x, y = pg.state()['screen'][3]
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    pg.mouse.move(x + drag_px, y - lift_px, steps=3)
+    pg.mouse.up()
+    return pg.state()
+
+
+def along(st, a, b, t):
+    (xa, ya), (xb, yb) = st['screen'][a], st['screen'][b]
+    return xa + t * (xb - xa), ya + t * (yb - ya)
+
+
+def brightest(pg, centre, r=3):
+    """The pixel with the largest channel sum in a (2r+1)^2 window: the line's core,
+    where the antialiasing coverage is 1."""
+    cx, cy = centre
+    pts = [[cx + dx, cy + dy] for dx in range(-r, r + 1) for dy in range(-r, r + 1)]
+    px = pg.js('(p) => clothApp.pixels(p)', pts)
+    return max(px, key=lambda c: (c[0] + c[1] + c[2], c[0]))
+
+
+def test_strain_mode_brightness_grows_with_strain(open_page):
+    pg = open_page()
+    st = stretched_row(pg, lift_px=60)
+    diff = pg.js('() => Array.from(clothApp.cloth().diff)')
+    assert diff[0] == 0 and diff[1] == 0 and diff[2] > 0.01
+    pg.js("clothApp.setColorMode('strain')")
+    # auto scale: the most strained edge is full red, an unstrained one the dim base red
+    pg.js("clothApp.setScaleMode('auto')")
+    rest = brightest(pg, along(st, 0, 1, 0.5))
+    hot = brightest(pg, along(st, 2, 3, 0.5))
+    assert hot[1] == hot[2] == 0 and rest[1] == rest[2] == 0, (hot, rest)
+    assert abs(hot[0] - 255) <= 1
+    assert abs(rest[0] - round(255 * BASE)) <= 1
+    # fixed scale: red = base + (1 - base) * |diff| / full_scale, linear in |diff|
+    full = diff[2] * 2
+    pg.js('(f) => clothApp.setScaleMode("fixed", f)', full)
+    half = brightest(pg, along(st, 2, 3, 0.5))
+    assert abs(half[0] - round(255 * (BASE + (1 - BASE) * 0.5))) <= 2, half
+    # drag further: the more stretched edge is brighter still
+    st2 = stretched_row(pg, lift_px=60, drag_px=120)
+    pg.js('(f) => clothApp.setScaleMode("fixed", f)', full)
+    diff2 = pg.js('() => Array.from(clothApp.cloth().diff)')[2]
+    assert diff2 > diff[2]
+    more = brightest(pg, along(st2, 2, 3, 0.5))
+    assert more[0] > half[0]
+
+
+def test_stress_mode_goes_from_blue_to_red(open_page):
+    pg = open_page()
+    st = stretched_row(pg, lift_px=80)
+    pg.js("clothApp.setScaleMode('auto')")
+    pg.js("clothApp.setColorMode('stress')")
+    # node Q: 0 at vertices 0 and 1, half the max at 2, the max at 3
+    cold = brightest(pg, along(st, 0, 1, 0.5))
+    warm = brightest(pg, along(st, 2, 3, 0.85))
+    mid = brightest(pg, along(st, 1, 2, 0.5))
+    assert cold[2] >= 250 and cold[0] <= 2, cold                 # pure blue
+    assert warm[0] > 200 and warm[2] < 50, warm                  # nearly red
+    assert 0 < mid[0] < mid[2] and abs(mid[0] + mid[2] - 255) <= 2, mid  # on the blue-red line
+    legend = pg.locator('#legend-title').inner_text()
+    assert 'stress' in legend
+
+
+def test_default_scene_draws_both_modes(open_page):
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    pg.js('clothApp.advance(60)')
+    pts = [p for i, p in enumerate(pg.state()['screen']) if i % 7 == 0]
+    reds = pg.js('(p) => clothApp.pixels(p)', pts)
+    assert sum(1 for c in reds if c[0] > 60 and c[2] == 0) > len(pts) // 2
+    pg.js("clothApp.setColorMode('stress')")
+    cols = pg.js('(p) => clothApp.pixels(p)', pts)
+    assert any(c[2] > 100 for c in cols)
+
+
+def test_context_loss_and_restore(open_page):
+    pg = open_page()
+    pg.js('''() => {
+        const gl = document.getElementById('view').getContext('webgl2');
+        window.__lose = gl.getExtension('WEBGL_lose_context');
+        window.__lose.loseContext();
+    }''')
+    pg.wait_for_function('clothApp.info().lost')
+    assert 'context was lost' in pg.locator('#banner').inner_text()
+    frames = pg.info()['frames']
+    pg.wait_for_function('(f) => clothApp.info().frames > f', arg=frames)  # the loop survives
+    pg.js('window.__lose.restoreContext()')
+    pg.wait_for_function('!clothApp.info().lost && clothApp.info().restores === 1')
+    assert pg.locator('#banner').is_hidden()
+    pg.js('clothApp.setPaused(true)')
+    pts = pg.state()['screen'][::5]
+    px = pg.js('(p) => clothApp.pixels(p)', pts)
+    assert sum(1 for c in px if c[0] > 60) > len(pts) // 2, 'nothing drawn after the restore'
+
+
+def test_webgl1_path(open_page):
+    pg = open_page('?webgl=1')
+    info = pg.info()
+    assert info['webgl'] == 1 and info['drawCalls'] == 2
+    pg.js('clothApp.setPaused(true)')
+    pts = pg.state()['screen'][::5]
+    px = pg.js('(p) => clothApp.pixels(p)', pts)
+    assert sum(1 for c in px if c[0] > 60) > len(pts) // 2
+
+
+def test_no_webgl_shows_a_clear_message(open_page):
+    pg = open_page('?webgl=0')
+    assert pg.info()['webgl'] == 0
+    msg = pg.locator('#fatal')
+    assert msg.is_visible() and 'WebGL' in msg.inner_text()
+    # the core still works without a renderer
+    assert json.loads(pg.js('clothCore.run(\'{"cols":2,"rows":2,"spacing":1}\', 3)'))['frames'] == 3
+
+
+@pytest.mark.parametrize('preset', ['curtain', 'corners', 'chain', 'large'])
+def test_presets_load_run_and_fit_the_view(open_page, preset):
+    pg = open_page('?paused=1&preset=' + preset)
+    pg.js('clothApp.advance(30)')
+    info = pg.info()
+    assert info['preset'] == preset and info['error'] == ''
+    st = pg.state()
+    assert all(v == v and abs(v) < 1e3 for p in st['positions'] for v in p)
+    box = pg.js('() => document.getElementById("view").getBoundingClientRect().toJSON()')
+    inside = sum(1 for sx, sy in st['screen']
+                 if box['left'] <= sx <= box['right'] and box['top'] <= sy <= box['bottom'])
+    assert inside == len(st['screen'])

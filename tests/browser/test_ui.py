@@ -1,0 +1,102 @@
+"""The controls: clamped inputs with a visible note, bad scenes shown while the old
+one keeps running, buttons and the scene-JSON box."""
+import json
+
+import pytest
+from playwright.sync_api import Error as PlaywrightError
+
+
+def set_input(pg, selector, value):
+    pg.fill(selector, str(value))
+    pg.press(selector, 'Enter')
+    pg.locator(selector).blur()
+
+
+@pytest.mark.parametrize('field,value,expect', [
+    ('#cols', 999, 200), ('#rows', 0, 1), ('#iterations', -5, 0), ('#substeps', 1000, 16),
+    ('#gravity', -1e6, -100), ('#cols', 12.6, 13)])
+def test_out_of_range_input_is_clamped_with_a_note(open_page, field, value, expect):
+    pg = open_page()
+    set_input(pg, field, value)
+    note = pg.locator('#note')
+    assert note.is_visible()
+    assert ('clamped' in note.inner_text()) or ('rounded' in note.inner_text())
+    assert float(pg.input_value(field)) == expect
+    key = field[1:]
+    assert pg.info()['params'][key] == expect
+    assert pg.info()['error'] == ''
+
+
+def test_grid_size_change_rebuilds_the_scene(open_page):
+    pg = open_page()
+    set_input(pg, '#cols', 12)
+    set_input(pg, '#rows', 9)
+    st = pg.state()
+    assert len(st['positions']) == 12 * 9
+    assert pg.locator('#note').is_hidden()
+    assert '12×9' in pg.locator('#r-size').inner_text() or pg.wait_for_function(
+        '() => document.getElementById("r-size").textContent.includes("12×9")')
+
+
+def test_bad_scene_shows_the_error_and_the_old_scene_keeps_running(open_page):
+    pg = open_page()
+    before = pg.info()
+    for text, key in [('{"cols": 3,', 'scene'), ('{"cols": 3, "rows": 2, "spacing": -1}', 'spacing'),
+                      ('{"cols": 3, "rows": 2, "spacing": 1, "wind": 2}', 'wind'),
+                      ('{"cols": 3, "rows": 2, "spacing": 1, "pins": [6]}', 'pins')]:
+        with pytest.raises(PlaywrightError) as err:
+            pg.js('(t) => clothApp.loadScene(t)', text)
+        assert key + ':' in str(err.value)
+        banner = pg.locator('#banner')
+        assert banner.is_visible() and key + ':' in banner.inner_text()
+        assert 'previous scene keeps running' in banner.inner_text()
+    info = pg.info()
+    assert info['scene'] == before['scene'] and info['preset'] == 'curtain'
+    pg.wait_for_function('(f) => clothApp.info().frames > f + 10', arg=info['frames'])
+    # a good scene clears the banner
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps({'cols': 5, 'rows': 4, 'spacing': 0.2, 'pins': [0, 4]}))
+    assert pg.locator('#banner').is_hidden() and pg.info()['preset'] == 'custom'
+    assert len(pg.state()['positions']) == 20
+
+
+def test_scene_json_box_loads_and_reports(open_page):
+    pg = open_page()
+    pg.click('#json-box summary')
+    pg.click('#btn-show-json')
+    shown = json.loads(pg.input_value('#scene-json'))
+    assert shown['cols'] == 40 and shown['rows'] == 30
+    pg.fill('#scene-json', 'not json')
+    pg.click('#btn-load-json')
+    assert pg.locator('#banner').is_visible() and 'scene:' in pg.locator('#banner').inner_text()
+    shown['cols'] = 7
+    pg.fill('#scene-json', json.dumps(shown))
+    pg.click('#btn-load-json')
+    assert pg.locator('#banner').is_hidden() and len(pg.state()['positions']) == 7 * 30
+
+
+def test_buttons_pause_step_reset_and_solver(open_page):
+    pg = open_page()
+    pg.click('#btn-pause')
+    assert pg.info()['paused'] and pg.inner_text('#btn-pause') == 'Resume'
+    f = pg.info()['frames']
+    pg.click('#btn-step')
+    assert pg.info()['frames'] == f + 1
+    p0 = pg.state()['positions']
+    pg.js('clothApp.advance(20)')
+    pg.click('#btn-reset')
+    assert pg.info()['frames'] == 0 and pg.state()['positions'] != p0
+    pg.select_option('#solver', 'jakobsen')
+    info = pg.info()
+    assert info['params']['solver'] == 'jakobsen' and info['params']['iterations'] == 20
+    assert json.loads(info['scene'])['solver'] == 'jakobsen'
+    pg.select_option('#preset', 'chain')
+    assert pg.info()['preset'] == 'chain' and len(pg.state()['positions']) == 40
+
+
+def test_readouts_update(open_page):
+    pg = open_page()
+    pg.wait_for_function('() => /\\d/.test(document.getElementById("r-fps").textContent)')
+    for rid in ('#r-sim', '#r-render', '#r-rms', '#r-max'):
+        txt = pg.inner_text(rid)
+        assert txt != '–' and float(txt) >= 0, (rid, txt)
+    assert pg.inner_text('#legend-hi').endswith('(max)')
