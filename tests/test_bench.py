@@ -1,0 +1,72 @@
+"""Smoke test of the benchmark: `python -m cloth.bench --quick` runs the shipped page in
+Chromium and writes its table with the seed's rows. No timing thresholds: machines are noisy."""
+
+import json
+import os
+import re
+import subprocess
+import sys
+
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+pytestmark = pytest.mark.browser
+
+SEED_ROWS = ['jakobsen i%d' % n for n in [1, 2, 5, 10, 20, 50, 100]] + ['default']
+SCENES = ['curtain', 'corners', 'dynamic']
+
+
+@pytest.fixture(scope='module')
+def quick(tmp_path_factory):
+    pytest.importorskip('playwright.sync_api')
+    out = tmp_path_factory.mktemp('bench')
+    proc = subprocess.run([sys.executable, '-m', 'cloth.bench', '--quick', '--out', str(out)],
+                          cwd=ROOT, capture_output=True, text=True, timeout=600)
+    return proc, out
+
+
+def table_rows(markdown, section):
+    """The first cells of the table under `## section`."""
+    part = markdown.split('## ' + section + '\n', 1)[1].split('\n## ', 1)[0]
+    return [m.group(1).strip() for m in re.finditer(r'^\| ([^|]+) \|', part, re.M)]
+
+
+def test_quick_exits_0(quick):
+    proc, out = quick
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    assert proc.stderr.strip(), 'no progress on stderr'
+    for name in ['bench-quick.md', 'bench-quick.json', 'bench-quick.svg',
+                 'bench-quick-strain.svg']:
+        assert (out / name).stat().st_size > 0, name
+
+
+def test_table_has_the_seed_rows(quick):
+    proc, out = quick
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    md = (out / 'bench-quick.md').read_text()
+    assert proc.stdout.strip() == md.strip()
+    for scene in SCENES:
+        rows = table_rows(md, '%s 30x30' % scene)
+        for name in SEED_ROWS:
+            assert name in rows, (scene, name, rows)
+    assert 'Speed of light' in md
+    assert 'curtain 60x60: not measured (--quick)' in md
+
+
+def test_json_matches_the_table(quick):
+    proc, out = quick
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    data = json.loads((out / 'bench-quick.json').read_text())
+    assert data['meta']['quick'] is True
+    got = {(r['scene'], r['size'], r['config']) for r in data['rows']}
+    for scene in SCENES:
+        for name in SEED_ROWS:
+            assert (scene, 30, name) in got
+    seed = [r for r in data['rows'] if r['config'] == 'jakobsen i20']
+    assert all(r['time_vs_seed'] == 1.0 for r in seed)
+    assert all(r['setting']['solver'] == 'jakobsen' and r['setting']['iterations'] == 20 and
+               r['setting']['substeps'] == 1 for r in seed)
+    # The hand-written kernel is the seed's method exactly: same positions, bit for bit.
+    assert data['speed_of_light']['bit_identical'] is True
+    assert (out / 'bench-quick.svg').read_text().startswith('<svg')
