@@ -734,6 +734,9 @@ FAMILY_COLORS = [
 ]
 
 
+PLOT_FLOOR = 1e-8   # values below this (e.g. 1e-15: exact to rounding) are drawn at it
+
+
 def svg_plot(result, metric, title):
     """A hand-written SVG: one log-log panel per (scene, size), one polyline per family."""
     groups = result['groups']
@@ -760,7 +763,7 @@ def svg_plot(result, metric, title):
     for si, kind in enumerate(scenes):
         for zi, n in enumerate(sizes):
             rows = [r for r in result['rows'] if r['scene'] == kind and r['size'] == n]
-            pts = [(r['ms_per_frame'], r[metric]) for r in rows
+            pts = [(r['ms_per_frame'], max(r[metric], PLOT_FLOOR)) for r in rows
                    if finite(r['ms_per_frame']) and finite(r[metric]) and
                    r['ms_per_frame'] > 0 and r[metric] > 0]
             x0 = 10 + zi * (pw + ml + mr) + ml
@@ -787,19 +790,22 @@ def svg_plot(result, metric, title):
                     x, y0, x, y0 + ph))
                 out.append('<text x="%.1f" y="%d" text-anchor="middle">1e%d</text>' % (
                     x, y0 + ph + 14, e))
+            every = max(1, int(math.ceil((yb - ya) / 6.0)))
             for e in range(ya, yb + 1):
                 y = py(10.0 ** e)
                 out.append('<line x1="%d" y1="%.1f" x2="%d" y2="%.1f" stroke="#eee"/>' % (
                     x0, y, x0 + pw, y))
-                out.append('<text x="%d" y="%.1f" text-anchor="end">1e%d</text>' % (
-                    x0 - 4, y + 4, e))
+                if (e - ya) % every == 0:
+                    out.append('<text x="%d" y="%.1f" text-anchor="end">1e%d</text>' % (
+                        x0 - 4, y + 4, e))
             out.append('<text x="%d" y="%d" text-anchor="middle">ms/frame</text>' % (
                 x0 + pw // 2, y0 + ph + 30))
             out.append('<text x="%d" y="%d" text-anchor="middle" transform="rotate(-90 %d %d)">'
                        '%s</text>' % (x0 - 44, y0 + ph // 2, x0 - 44, y0 + ph // 2,
                                       esc(metric.replace('_', ' '))))
             for family, color in FAMILY_COLORS:
-                fam = [(r['ms_per_frame'], r[metric], r['config']) for r in rows
+                fam = [(r['ms_per_frame'], max(r[metric], PLOT_FLOOR), r['config'])
+                       for r in rows
                        if r['family'] == family and finite(r[metric]) and r[metric] > 0 and
                        finite(r['ms_per_frame']) and r['ms_per_frame'] > 0]
                 if not fam:
@@ -913,11 +919,13 @@ def main(argv=None):
         json.dump(json_safe(result), f, indent=1, allow_nan=False)
         f.write('\n')
     with open(os.path.join(args.out, 'bench%s.svg' % suffix), 'w', encoding='utf-8') as f:
-        f.write(svg_plot(result, 'rms_error', 'RMS position error (m) against ms/frame%s' %
-                         (' (quick)' if args.quick else '')))
+        f.write(svg_plot(result, 'rms_error', 'RMS position error (m) against ms/frame%s; '
+                         'values below %g drawn at %g' % (' (quick)' if args.quick else '',
+                                                           PLOT_FLOOR, PLOT_FLOOR)))
     with open(os.path.join(args.out, 'bench%s-strain.svg' % suffix), 'w', encoding='utf-8') as f:
-        f.write(svg_plot(result, 'rms_strain', 'RMS strain against ms/frame%s' %
-                         (' (quick)' if args.quick else '')))
+        f.write(svg_plot(result, 'rms_strain', 'RMS strain against ms/frame%s; values below '
+                         '%g drawn at %g' % (' (quick)' if args.quick else '', PLOT_FLOOR,
+                                             PLOT_FLOOR)))
     sys.stdout.write(md)
     progress('wrote %s' % ', '.join(os.path.join(args.out, 'bench%s%s' % (suffix, e))
                                     for e in ['.md', '.json', '.svg', '-strain.svg']))
