@@ -126,7 +126,7 @@ def parse_module(text, module):
 
 def link(js_dir, entry='api'):
     """Link the ES modules under js_dir, reachable from entry, into one classic
-    script that defines the single global `clothTranscrypt`."""
+    script that defines the single global `clothTranscrypt` = {api, modules}."""
     parsed = {}
     order = []
 
@@ -157,7 +157,8 @@ def link(js_dir, entry='api'):
         fields = ', '.join('%s: %s' % (exported, local) for exported, local in exports)
         out.append('return {%s};' % fields)
         out.append('})();')
-    out.append('return {api: %s};' % _ident(entry))
+    out.append('return {api: %s, modules: {%s}};' % (
+        _ident(entry), ', '.join("'%s': %s" % (m, _ident(m)) for m in order)))
     out.append('})();')
     return '\n'.join(out) + '\n'
 

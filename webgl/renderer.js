@@ -178,6 +178,7 @@ window.clothRenderer = (function () {
     let inst = null, edgeProg = null, markProg = null;
     let cornerBuf = null, markCornerBuf = null, edgeBuf = null, markBuf = null;
     let edgeData = new Float32Array(0), markData = new Float32Array(0);
+    let edgeView = edgeData;  // edgeData's first 6 * n_edges floats, made once per scene
     let edgeCap = 0, markCap = 0, nEdges = 0, nMarks = 0;
     let view = { x0: 0, x1: 1, y0: -1, y1: 0 };
     // world -> CSS pixels: cssX = ox + s * x, cssY = oy - s * y
@@ -256,6 +257,7 @@ window.clothRenderer = (function () {
         gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
         gl.bufferData(gl.ARRAY_BUFFER, markData.byteLength, gl.DYNAMIC_DRAW);
       }
+      edgeView = edgeData.subarray(0, 6 * ne);
     };
 
     // Fit the view box inside the canvas less a small inset, keeping aspect.
@@ -290,7 +292,7 @@ window.clothRenderer = (function () {
     // The hot path: refill the arrays in place, upload, two draw calls.
     r.draw = function (cloth, mode, scale) {
       if (r.lost || gl.isContextLost()) return;
-      const ne = cloth.n_edges, nv = cloth.n_verts;
+      const ne = Math.min(cloth.n_edges, edgeCap), nv = Math.min(cloth.n_verts, markCap);
       const pos = cloth.pos, ea = cloth.edge_a, eb = cloth.edge_b;
       const ed = edgeData;
       const stressMode = mode === 'stress';
@@ -331,7 +333,7 @@ window.clothRenderer = (function () {
 
       if (nEdges > 0) {
         gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
-        gl.bufferSubData(gl.ARRAY_BUFFER, 0, edgeData.subarray(0, 6 * nEdges));
+        gl.bufferSubData(gl.ARRAY_BUFFER, 0, edgeView);
         gl.useProgram(edgeProg.prog);
         const u = edgeProg.u;
         gl.uniform2f(u.u_scale, s * px, -s * px);
@@ -357,7 +359,9 @@ window.clothRenderer = (function () {
       }
       if (nMarks > 0) {
         gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
-        gl.bufferSubData(gl.ARRAY_BUFFER, 0, markData.subarray(0, 3 * nMarks));
+        // WebGL2 uploads just the used part with no view object; WebGL1 sends it all.
+        if (version === 2) gl.bufferSubData(gl.ARRAY_BUFFER, 0, markData, 0, 3 * nMarks);
+        else gl.bufferSubData(gl.ARRAY_BUFFER, 0, markData);
         gl.useProgram(markProg.prog);
         const u = markProg.u;
         gl.uniform2f(u.u_scale, s * px, -s * px);
