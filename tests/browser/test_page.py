@@ -69,3 +69,52 @@ def test_core_errors_are_js_errors_with_the_message(open_page):
     assert res[0][1].startswith('scene:')
     assert res[2][1].startswith('colour:')
     assert res[3][1].startswith('cols:')
+
+
+# Issue #7 point 3: every malformed scene gets the same one-line message in the page
+# as in CPython (the CLI), as a real Error, and loadScene shows it.
+MALFORMED = [
+    'not json', '[1, 2]', '"text"', '{}',
+    '{"cols": "3", "rows": 2, "spacing": 0.1}',
+    '{"cols": 3, "rows": 2, "spacing": 0}',
+    '{"cols": 3, "rows": -2, "spacing": 0.1}',
+    '{"cols": 3, "rows": 2, "spacing": 0.1, "dt": 0}',
+    '{"cols": 3, "rows": 2, "spacing": 0.1, "dt": 1e999}',
+    '{"cols": 3, "rows": 2, "spacing": 0.1, "iterations": -1}',
+    '{"cols": 3, "rows": 2, "spacing": 0.1, "solver": "magic"}',
+    '{"cols": 3, "rows": 2, "spacing": 0.1, "pins": [6]}',
+    '{"cols": 3, "rows": 2, "spacing": 0.1, "gravity": [0, "down"]}',
+    '{"cols": 100000, "rows": 100000, "spacing": 0.1}',
+    '{"cols": 3, "rows": 2, "spacing": 0.1, "wind": [1, 0]}',
+    '{"cols": 3, "rows": 2, "spacing": 0.1, "actions": [{"frame": 0, "op": "grab", "vertex": 9}]}',
+]
+
+
+def test_bad_scenes_give_the_cli_message_in_the_page(open_page):
+    sys.path.insert(0, str(ROOT))
+    try:
+        from cloth import api
+        from cloth.scene import SceneError
+    finally:
+        sys.path.pop(0)
+    expected = []
+    for text in MALFORMED:
+        try:
+            api.run(text, 1)
+            expected.append(None)
+        except SceneError as e:
+            expected.append(str(e))
+    assert None not in expected
+    pg = open_page()
+    got = pg.js('''(texts) => texts.map((t) => {
+        let run = null, shown = null;
+        try { clothCore.run(t, 1); } catch (e) { run = e instanceof Error ? e.message : 'not an Error'; }
+        try { clothApp.loadScene(t); } catch (e) {
+            shown = document.getElementById('banner-text').textContent; }
+        return [run, shown];
+    })''', MALFORMED)
+    for text, want, (run, shown) in zip(MALFORMED, expected, got):
+        assert run == want, text
+        assert '\n' not in want and shown is not None and want in shown, text
+    info = pg.info()
+    assert info['preset'] == 'curtain'  # the first scene is still the one running
