@@ -24,7 +24,7 @@ OPS = ['grab', 'move', 'release', 'pin', 'unpin']
 
 SCENE_KEYS = ['cols', 'rows', 'spacing', 'pins', 'gravity', 'dt', 'substeps', 'iterations',
               'damping', 'solver', 'actions', 'tethers', 'shear', 'compliance', 'tolerance',
-              'name']
+              'max_speed', 'name']
 ACTION_KEYS = ['frame', 'op', 'vertex', 'to']
 
 
@@ -60,6 +60,7 @@ class Scene:
         self.substeps = 1
         self.iterations = 20
         self.damping = 0.0
+        self.max_speed = 1000.0
         self.solver = DEFAULT_SOLVER
         self.tethers = False
         self.shear = False
@@ -176,6 +177,9 @@ def scene_from_object(obj):
     if has_key(obj, 'damping'):
         s.damping = number(obj['damping'], 'damping', 0.0, 1000.0, False,
                            'from 0 to 1000 per second')
+    if has_key(obj, 'max_speed'):
+        s.max_speed = number(obj['max_speed'], 'max_speed', 0.0, 1e6, True,
+                             'in (0, 1000000] m/s')
     if has_key(obj, 'tethers'):
         s.tethers = boolean(obj['tethers'], 'tethers')
     if has_key(obj, 'shear'):

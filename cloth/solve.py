@@ -17,21 +17,37 @@ import math
 TINY2 = 1e-30
 
 
-def integrate(pos, prev, inv_mass, n, keep, ax, ay):
-    """Position Verlet, x' = x + (x - x*) * keep + a h^2, for every free vertex.
+def integrate(pos, prev, inv_mass, n, keep, ax, ay, max_step):
+    """Position Verlet, x' = x + (x - x*) * keep + a h^2, for every free vertex; returns how
+    many vertices had their speed clamped.
 
     keep = 1 / (1 + damping h): the velocity (x - x*) / h loses damping * h of itself per step,
-    in a form that stays in (0, 1] for any damping and step (exp would not be bit-exact)."""
+    in a form that stays in (0, 1] for any damping and step (exp would not be bit-exact).
+    max_step = max_speed * h is a safety net, not physics: with one or two sweeps an undamped
+    cloth can pump energy without bound (a 60x60 cloth on one pin reaches 1e9 m/s, then NaN).
+    Speeds above max_speed are scaled down to it; below it the step is exactly the seed's."""
+    sqrt = math.sqrt
+    max_step2 = max_step * max_step
+    clamped = 0
     for k in range(n):
         if inv_mass[k] == 0.0:
             continue
         i = k + k
         x = pos[i]
         y = pos[i + 1]
-        pos[i] = x + (x - prev[i]) * keep + ax
-        pos[i + 1] = y + (y - prev[i + 1]) * keep + ay
+        vx = (x - prev[i]) * keep
+        vy = (y - prev[i + 1]) * keep
+        v2 = vx * vx + vy * vy
+        if v2 > max_step2:
+            s = max_step / sqrt(v2)
+            vx = vx * s
+            vy = vy * s
+            clamped += 1
+        pos[i] = x + vx + ax
+        pos[i + 1] = y + vy + ay
         prev[i] = x
         prev[i + 1] = y
+    return clamped
 
 
 def sweep_jakobsen(pos, inv_mass, edge_a, edge_b, rest, m, track):
@@ -143,11 +159,14 @@ def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, alpha, track):
     return worst
 
 
-def project_tethers(pos, inv_mass, anchor, tether, n):
-    """Long-range attachments (Kim, Chentanez, Mueller 2012): a free vertex may be no farther
-    from its anchor (the nearest fixed vertex along the cloth) than the rest distance between
-    them. One-sided and one projection per vertex, yet it removes the low-frequency stretch
-    that Gauss-Seidel sweeps take O(N^2) passes to remove."""
+def project_tethers(pos, prev, inv_mass, anchor, tether, n):
+    """Long-range attachments (Kim, Chentanez, Mueller 2012), one-sided: a free vertex may be no
+    farther from its anchor (the nearest fixed vertex along the cloth) than the rest distance
+    between them. One projection per vertex removes the low-frequency stretch that Gauss-Seidel
+    sweeps take O(N^2) passes to remove. Like sweep_xpbd, the vertex moves along the
+    anchor-to-vertex direction at the start of the step (one Newton step on |d|^2 = limit^2, no
+    sqrt), so that a tether that is also an edge (a pendulum) keeps its energy; far from the
+    limit or after a sharp turn it is projected along d onto the exact distance instead."""
     sqrt = math.sqrt
     for k in range(n):
         c = anchor[k]
@@ -159,12 +178,21 @@ def project_tethers(pos, inv_mass, anchor, tether, n):
         dy = pos[i + 1] - pos[j + 1]
         d2 = dx * dx + dy * dy
         limit = tether[k]
-        if d2 <= limit * limit:
+        limit2 = limit * limit
+        if d2 <= limit2:
             continue
-        d = sqrt(d2)
-        s = (d - limit) / d
-        pos[i] -= dx * s
-        pos[i + 1] -= dy * s
+        ox = prev[i] - prev[j]
+        oy = prev[i + 1] - prev[j + 1]
+        dot = dx * ox + dy * oy
+        if dot * dot > 0.81 * d2 * (ox * ox + oy * oy) and dot > 0.0 and d2 < 1.21 * limit2:
+            s = 0.5 * (d2 - limit2) / dot
+            pos[i] -= ox * s
+            pos[i + 1] -= oy * s
+        else:
+            d = sqrt(d2)
+            s = (d - limit) / d
+            pos[i] -= dx * s
+            pos[i + 1] -= dy * s
 
 
 def clear(values, m):
