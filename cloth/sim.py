@@ -176,7 +176,7 @@ def frame(cloth):
     """Advance one frame: `substeps` steps of dt / substeps each."""
     if cloth.use_tethers and cloth.anchors_stale:
         find_anchors(cloth.n_verts, cloth.adj_start, cloth.adj_vertex, cloth.adj_rest,
-                     cloth.inv_mass, cloth.anchor, cloth.tether)
+                     cloth.inv_mass, cloth.anchor, cloth.tether, cloth.cols, cloth.spacing)
         cloth.anchors_stale = False
     for s in range(cloth.substeps):
         step(cloth)
