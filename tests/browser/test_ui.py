@@ -12,19 +12,26 @@ def set_input(pg, selector, value):
     pg.locator(selector).blur()
 
 
-@pytest.mark.parametrize('field,value,expect', [
-    ('#cols', 999, 200), ('#rows', 0, 1), ('#iterations', -5, 0), ('#substeps', 1000, 16),
-    ('#gravity', -1e6, -100), ('#cols', 12.6, 13)])
-def test_out_of_range_input_is_clamped_with_a_note(open_page, field, value, expect):
+CLAMPS = [('#cols', 999, 200), ('#rows', 0, 1), ('#iterations', -5, 0), ('#substeps', 1000, 16),
+          ('#gravity', -1e6, -100), ('#cols', 12.6, 13)]
+
+
+def test_out_of_range_input_is_clamped_with_a_note(open_page):
     pg = open_page()
-    set_input(pg, field, value)
-    note = pg.locator('#note')
-    assert note.is_visible()
-    assert ('clamped' in note.inner_text()) or ('rounded' in note.inner_text())
-    assert float(pg.input_value(field)) == expect
-    key = field[1:]
-    assert pg.info()['params'][key] == expect
-    assert pg.info()['error'] == ''
+    for field, value, expect in CLAMPS:
+        set_input(pg, field, value)
+        note = pg.locator('#note')
+        assert note.is_visible(), field
+        assert ('clamped' in note.inner_text()) or ('rounded' in note.inner_text())
+        assert float(pg.input_value(field)) == expect
+        assert pg.info()['params'][field[1:]] == expect
+        assert pg.info()['error'] == ''
+    # a value that is not a number is refused with a note, the old value stays
+    pg.js("clothApp.setScaleMode('fixed', 'abc')")
+    assert 'not a number' in pg.locator('#note').inner_text()
+    assert pg.info()['fullScale'] == 0.05
+    pg.js("clothApp.setScaleMode('fixed', 7)")
+    assert pg.info()['fullScale'] == 1 and 'clamped' in pg.locator('#note').inner_text()
 
 
 def test_grid_size_change_rebuilds_the_scene(open_page):
