@@ -18,7 +18,8 @@
 window.clothRenderer = (function () {
   const STRAIN_BASE = 0.3;          // red level of an unstrained edge
   const BACKGROUND = [0.075, 0.082, 0.098];
-  const EDGE_HALF_WIDTH_CSS = 0.75; // half the edge width, CSS pixels
+  const EDGE_HALF_WIDTH_CSS = 0.75; // half the edge width, CSS pixels (dense grids: thinner)
+  const DENSE_CELL_CSS = 8;         // below this grid cell size (CSS px) edges thin out
   const PIN_RADIUS_CSS = 4.5;
   const HELD_RADIUS_CSS = 8;
 
@@ -181,6 +182,7 @@ window.clothRenderer = (function () {
     let edgeView = edgeData;  // edgeData's first 6 * n_edges floats, made once per scene
     let edgeCap = 0, markCap = 0, nEdges = 0, nMarks = 0;
     let view = { x0: 0, x1: 1, y0: -1, y1: 0 };
+    let spacing = 1;  // the grid's rest length, metres: sets the edge width
     // world -> CSS pixels: cssX = ox + s * x, cssY = oy - s * y
     let s = 1, ox = 0, oy = 0;
 
@@ -258,7 +260,17 @@ window.clothRenderer = (function () {
         gl.bufferData(gl.ARRAY_BUFFER, markData.byteLength, gl.DYNAMIC_DRAW);
       }
       edgeView = edgeData.subarray(0, 6 * ne);
+      spacing = cloth.spacing > 0 ? cloth.spacing : 1;
     };
+
+    // Half the edge width in device pixels. At least one device pixel on ordinary
+    // grids, so every edge has a fully covered core pixel; on dense grids edges thin
+    // out (down to half a pixel, antialiased) so the cells stay open.
+    function halfWidth(px) {
+      const cell = spacing * s;
+      if (cell >= DENSE_CELL_CSS) return Math.max(EDGE_HALF_WIDTH_CSS * px, 1.0);
+      return Math.max(Math.max(0.3, 0.1 * cell) * px, 0.5);
+    }
 
     // Fit the view box inside the canvas less a small inset, keeping aspect.
     function fit() {
@@ -339,7 +351,7 @@ window.clothRenderer = (function () {
         gl.uniform2f(u.u_scale, s * px, -s * px);
         gl.uniform2f(u.u_offset, ox * px, oy * px);
         gl.uniform2f(u.u_viewport, W, H);
-        gl.uniform1f(u.u_halfWidth, Math.max(EDGE_HALF_WIDTH_CSS * px, 1.0));
+        gl.uniform1f(u.u_halfWidth, halfWidth(px));
         gl.uniform1f(u.u_mode, stressMode ? 1 : 0);
         gl.uniform1f(u.u_invScale, scale > 1e-12 ? 1 / scale : 0);
         gl.uniform1f(u.u_base, STRAIN_BASE);

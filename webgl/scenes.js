@@ -32,6 +32,16 @@ window.clothScenes = (function () {
     return pins;
   }
 
+  // n pins spread evenly along the top row (fewer when the row is short).
+  function spread(cols, n) {
+    const pins = [];
+    for (let i = 0; i < n; i++) {
+      const c = Math.round(i * (cols - 1) / (n - 1));
+      if (pins.indexOf(c) < 0) pins.push(c);
+    }
+    return pins;
+  }
+
   // size: the cloth's larger side in metres; the spacing follows from the grid.
   const PRESETS = {
     curtain: {
@@ -59,7 +69,7 @@ window.clothScenes = (function () {
       label: 'Large cloth',
       params: { cols: 100, rows: 100 },
       size: 2.0,
-      pins: function (cols) { return topRow(cols, Math.max(1, Math.floor((cols - 1) / 4))); },
+      pins: function (cols) { return spread(cols, 5); },
     },
   };
 

@@ -8,6 +8,14 @@ window.clothUI = (function () {
 
   function $(id) { return document.getElementById(id); }
 
+  // Mark the checked option of a segmented radio group (no reliance on CSS :has()).
+  function checkRadio(name, value) {
+    document.querySelectorAll('input[name=' + name + ']').forEach(function (r) {
+      r.checked = r.value === value;
+      r.parentElement.classList.toggle('on', r.checked);
+    });
+  }
+
   function fmt(v, digits) {
     if (!Number.isFinite(v)) return '–';
     if (v !== 0 && (Math.abs(v) < 0.001 || Math.abs(v) >= 1e4)) return v.toExponential(2);
@@ -83,12 +91,12 @@ window.clothUI = (function () {
         el.paused.hidden = !paused;
       },
       setMode: function (mode) {
-        document.querySelectorAll('input[name=mode]').forEach(function (r) { r.checked = r.value === mode; });
+        checkRadio('mode', mode);
         el.legend.classList.toggle('stress', mode === 'stress');
         el.legendTitle.textContent = mode === 'stress' ? 'stress Q / scale' : 'strain |diff|';
       },
       setScale: function (scaleMode, fullScale) {
-        document.querySelectorAll('input[name=scale]').forEach(function (r) { r.checked = r.value === scaleMode; });
+        checkRadio('scale', scaleMode);
         el.fullScale.value = String(fullScale);
         el.fullScale.disabled = scaleMode !== 'fixed';
       },
