@@ -2,7 +2,7 @@
 
     python tests/browser/screenshot.py [--mode strain|stress] [--out docs/screenshot.png]
 
-Loads the "two corners" preset, lets it settle, pulls a bottom vertex down and to the
+Loads the "two corners" preset (with the seed's Jakobsen solver by default), lets it settle, pulls a bottom vertex down and to the
 side with the mouse and photographs the page while the vertex is held.
 """
 import argparse
@@ -16,6 +16,7 @@ from browser_helpers import ARGS, DIST, ROOT, SYSTEM_CHROMIUM  # noqa: E402
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     ap.add_argument('--mode', default='strain', choices=['strain', 'stress'])
+    ap.add_argument('--solver', default='jakobsen', choices=['jakobsen', 'xpbd'])
     ap.add_argument('--out', default=str(ROOT / 'docs' / 'screenshot.png'))
     args = ap.parse_args()
     from playwright.sync_api import sync_playwright
@@ -28,6 +29,7 @@ def main():
         page.goto(DIST.as_uri() + '?preset=corners')
         page.wait_for_function('window.clothApp && clothApp.info().frames > 0')
         page.evaluate("(m) => clothApp.setColorMode(m)", args.mode)
+        page.evaluate("(s) => clothApp.setSolver(s)", args.solver)
         page.evaluate('clothApp.setPaused(true)')
         page.evaluate('clothApp.advance(240)')
         st = page.evaluate('clothApp.state()')
