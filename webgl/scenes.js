@@ -20,10 +20,14 @@ window.clothScenes = (function () {
   // Each solver's own substeps and iterations (mirrors cloth/scene.py's
   // solver_defaults): picking a solver in the UI starts from these.
   const SOLVERS = {
-    xpbd: { label: 'XPBD + tethers', substeps: 8, iterations: 2 },
     jakobsen: { label: 'Jakobsen (seed)', substeps: 1, iterations: 20 },
+    xpbd: { label: 'XPBD + tethers', substeps: 8, iterations: 2 },
   };
-  const DEFAULT_PARAMS = { solver: 'xpbd', substeps: 8, iterations: 2, gravity: -9.81 };
+  // The presets start with the seed's method: 20 Jakobsen sweeps leave the edges
+  // visibly stretchable, so the cloth drapes and the strain colours have something
+  // to show. XPBD + tethers (the core's default) is nearly inextensible: a curtain
+  // hung at rest length barely moves and its strain is close to zero.
+  const DEFAULT_PARAMS = { solver: 'jakobsen', substeps: 1, iterations: 20, gravity: -9.81 };
 
   function topRow(cols, every) {
     const pins = [];
@@ -67,7 +71,9 @@ window.clothScenes = (function () {
     },
     large: {
       label: 'Large cloth',
-      params: { cols: 100, rows: 100 },
+      // 20 Jakobsen sweeps cannot hold 100 rows (the cloth stretches far below
+      // its length), so the large cloth uses the core's XPBD + tethers.
+      params: { cols: 100, rows: 100, solver: 'xpbd', substeps: 8, iterations: 2 },
       size: 2.0,
       pins: function (cols) { return spread(cols, 5); },
     },

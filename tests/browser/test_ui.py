@@ -92,10 +92,11 @@ def test_buttons_pause_step_reset_and_solver(open_page):
     pg.js('clothApp.advance(20)')
     pg.click('#btn-reset')
     assert pg.info()['frames'] == 0 and pg.state()['positions'] != p0
-    pg.select_option('#solver', 'jakobsen')
+    assert pg.info()['params']['solver'] == 'jakobsen'  # the seed's method by default
+    pg.select_option('#solver', 'xpbd')
     info = pg.info()
-    assert info['params']['solver'] == 'jakobsen' and info['params']['iterations'] == 20
-    assert json.loads(info['scene'])['solver'] == 'jakobsen'
+    assert info['params']['solver'] == 'xpbd' and info['params']['iterations'] == 2
+    assert info['params']['substeps'] == 8 and json.loads(info['scene'])['solver'] == 'xpbd'
     pg.select_option('#preset', 'chain')
     assert pg.info()['preset'] == 'chain' and len(pg.state()['positions']) == 40
 
