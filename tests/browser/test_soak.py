@@ -77,7 +77,7 @@ def test_soak_heap_flat_and_no_nan(app):
 
 def test_hot_path_allocates_nothing_per_frame(app):
     page, cdp, _ = app
-    page.evaluate('clothApp.advance(500)')            # warm
+    page.evaluate('clothApp.advance(3000)')           # warm: until every kernel is optimised
     frames = 3000
     cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256})
     page.evaluate('(n) => clothApp.advance(n)', frames)
