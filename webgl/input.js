@@ -2,7 +2,8 @@
 //
 // Press on or near a vertex: it is grabbed and held exactly under the pointer
 // until release (each pointer holds its own vertex, so two fingers can pull two
-// corners). Right-click, Shift+click, or a double-tap on touch toggles a pin.
+// corners). Right-click (or a pen's barrel button), Shift+click, or a double-tap
+// with a finger or pen toggles a pin.
 // The canvas has CSS `touch-action: none`, otherwise the browser claims a touch
 // for scrolling and sends pointercancel on the first move.
 'use strict';
@@ -31,7 +32,8 @@ window.clothInput = (function () {
 
     canvas.addEventListener('pointerdown', function (e) {
       const hit = pickAt(e);
-      if (e.pointerType === 'mouse' && (e.button === 2 || (e.button === 0 && e.shiftKey))) {
+      // Right button (mouse, or a pen's barrel button) or Shift+click: toggle a pin.
+      if (e.button === 2 || (e.button === 0 && e.shiftKey && e.pointerType === 'mouse')) {
         e.preventDefault();
         if (hit.k >= 0) app.togglePin(hit.k);
         return;
@@ -68,7 +70,7 @@ window.clothInput = (function () {
         app.move(d.k, w[0], w[1]);
       }
       app.release(d.k);
-      if (e.type === 'pointerup' && e.pointerType === 'touch' && !d.moved) {
+      if (e.type === 'pointerup' && e.pointerType !== 'mouse' && !d.moved) {
         const now = e.timeStamp;
         if (lastTap && now - lastTap.t < DOUBLE_TAP_MS && lastTap.k === d.k &&
             Math.abs(e.clientX - lastTap.x) + Math.abs(e.clientY - lastTap.y) < DOUBLE_TAP_PX) {
