@@ -82,6 +82,7 @@
     input.releaseAll();
     s.cloth = cloth;
     s.m = bind(cloth);
+    s.clamped = 0;
     s.sceneText = text;
     s.sceneObj = obj;
     s.preset = preset;
@@ -195,6 +196,12 @@
     const t0 = performance.now();
     for (let i = 0; i < n; i++) m.frame();
     m.measure();
+    // The core's max_speed safety net engaged: the settings are unstable (one sweep per
+    // step on an undamped grid). Say so rather than let it pass silently.
+    if (s.cloth.clamped > s.clamped) {
+      s.clamped = s.cloth.clamped;
+      ui.note('Unstable settings: speeds were capped at max_speed; use 2+ iterations, or damping');
+    }
     const ms = (performance.now() - t0) / n;
     s.simMs = Number.isFinite(s.simMs) ? s.simMs + EMA * (ms - s.simMs) : ms;
     s.frames += n;

@@ -92,11 +92,11 @@ def test_buttons_pause_step_reset_and_solver(open_page):
     pg.js('clothApp.advance(20)')
     pg.click('#btn-reset')
     assert pg.info()['frames'] == 0 and pg.state()['positions'] != p0
-    assert pg.info()['params']['solver'] == 'jakobsen'  # the seed's method by default
-    pg.select_option('#solver', 'xpbd')
+    assert pg.info()['params']['solver'] == 'xpbd'  # the core's default solver
+    pg.select_option('#solver', 'jakobsen')
     info = pg.info()
-    assert info['params']['solver'] == 'xpbd' and info['params']['iterations'] == 2
-    assert info['params']['substeps'] == 8 and json.loads(info['scene'])['solver'] == 'xpbd'
+    assert info['params']['solver'] == 'jakobsen' and info['params']['iterations'] == 20
+    assert info['params']['substeps'] == 1 and json.loads(info['scene'])['solver'] == 'jakobsen'
     pg.select_option('#preset', 'chain')
     assert pg.info()['preset'] == 'chain' and len(pg.state()['positions']) == 40
 
@@ -108,3 +108,16 @@ def test_readouts_update(open_page):
         txt = pg.inner_text(rid)
         assert txt != '–' and float(txt) >= 0, (rid, txt)
     assert pg.inner_text('#legend-hi').endswith('(max)')
+
+
+def test_unstable_settings_are_reported(open_page):
+    # One sweep per step on an undamped grid pumps energy; the core's max_speed net holds it
+    # and the page must say so instead of hiding it.
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    scene = dict(cols=30, rows=30, spacing=1 / 29, pins=[0], solver='jakobsen', iterations=1)
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps(scene))
+    assert 'Unstable' not in pg.info()['note']
+    pg.js('clothApp.advance(600)')
+    assert 'Unstable settings' in pg.info()['note']
+    assert all(abs(v) < 1e6 for p in pg.state()['positions'] for v in p)
