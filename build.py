@@ -204,6 +204,8 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     ap.add_argument('--check', action='store_true',
                     help='exit 1 if dist/index.html differs from a fresh build; write nothing in dist/')
+    ap.add_argument('--open', action='store_true',
+                    help='open dist/index.html in the default browser after building')
     args = ap.parse_args(argv)
     try:
         if args.check:
@@ -230,6 +232,12 @@ def main(argv=None):
     with open(DIST_HTML, 'wb') as f:
         f.write(data)
     print('wrote dist/index.html (%d bytes)' % len(data))
+    if args.open:
+        import pathlib
+        import webbrowser
+        url = pathlib.Path(DIST_HTML).resolve().as_uri()
+        if not webbrowser.open(url):
+            print('open this in a browser: ' + url)
     return 0
 
 
