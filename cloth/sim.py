@@ -74,7 +74,6 @@ class Cloth:
         self.anchor = i32(n)
         self.tether = f64(n)
         self.anchors_stale = True
-        self.n_held = 0
         self.frames_done = 0
         # Constraint projections done so far (edges + tethers): the benchmark's cost measure.
         self.projections = 0
@@ -177,7 +176,7 @@ def frame(cloth):
     """Advance one frame: `substeps` steps of dt / substeps each."""
     if cloth.use_tethers and cloth.anchors_stale:
         find_anchors(cloth.n_verts, cloth.adj_start, cloth.adj_vertex, cloth.adj_rest,
-                     cloth.pinned, cloth.anchor, cloth.tether, cloth.cols, cloth.spacing)
+                     cloth.inv_mass, cloth.anchor, cloth.tether, cloth.cols, cloth.spacing)
         cloth.anchors_stale = False
     for s in range(cloth.substeps):
         step(cloth)
@@ -195,16 +194,11 @@ def step(cloth):
     if cloth.use_xpbd:
         clear(cloth.lam, m)
     track = cloth.tolerance > 0.0
-    # No tethers while a vertex is held: a hand can pull a vertex beyond the cloth's reach
-    # from its pins, and hard tethers would then tear the cloth apart between the held vertex
-    # and the pins (measured: max strain 11 against 2.6 for the seed's method, which spreads
-    # the impossible stretch over all edges, as the edges alone do here).
-    tethered = cloth.use_tethers and cloth.n_held == 0
     for it in range(cloth.iterations):
         # Tethers first: they take out the step's low-frequency stretch in one pass, so the
         # sweep that follows measures (and fixes) only what is left; a hanging cloth at rest
         # then meets the tolerance after one sweep.
-        if tethered:
+        if cloth.use_tethers:
             project_tethers(pos, cloth.prev, inv_mass, cloth.anchor, cloth.tether, n)
             cloth.projections += n
         if cloth.use_xpbd:
@@ -241,13 +235,12 @@ def rest_at(cloth, k):
 
 
 def refresh(cloth, k):
-    """inv_mass follows pinned and held; the count of held vertices follows held."""
+    """inv_mass follows pinned and held; the tether anchors follow the fixed set."""
     fixed = cloth.pinned[k] == 1 or cloth.held[k] == 1
+    was_fixed = cloth.inv_mass[k] == 0.0
     cloth.inv_mass[k] = 0.0 if fixed else 1.0
-    n_held = 0
-    for q in range(cloth.n_verts):
-        n_held += cloth.held[q]
-    cloth.n_held = n_held
+    if fixed != was_fixed:
+        cloth.anchors_stale = True
     rest_at(cloth, k)
 
 
@@ -278,14 +271,12 @@ def release(cloth, k):
 def pin(cloth, k):
     check_vertex(cloth, k)
     cloth.pinned[k] = 1
-    cloth.anchors_stale = True
     refresh(cloth, k)
 
 
 def unpin(cloth, k):
     check_vertex(cloth, k)
     cloth.pinned[k] = 0
-    cloth.anchors_stale = True
     refresh(cloth, k)
 
 

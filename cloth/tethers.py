@@ -1,4 +1,4 @@
-"""Anchors for long-range tethers: for every vertex, the nearest pinned vertex along the cloth,
+"""Anchors for long-range tethers: for every vertex, the nearest fixed vertex along the cloth,
 and the tether's length, the straight-line distance between the two in the rest grid.
 
 "Nearest along the cloth" is the shortest path over the scene's edges weighted by rest
@@ -8,7 +8,7 @@ farther from a pin than it lies in the flat material without stretching or shear
 tighter bound halves the stretch left in a cloth hung from two corners (measured: RMS strain
 2.6e-2 -> 1.2e-2 at 60x60). Only a grid whose cells collapse into rhombi, which a real cloth
 resists, could reach past it.
-Run only when the set of pinned vertices changes (pin, unpin), not per frame.
+Run only when the set of fixed vertices changes (pin, unpin, grab, release), not per frame.
 """
 
 import math
@@ -16,8 +16,8 @@ import math
 from cloth.host import f64, i32
 
 
-def find_anchors(n, adj_start, adj_vertex, adj_rest, pinned, anchor, tether, cols, spacing):
-    """Fill anchor[k] (the nearest pinned vertex along the edges, or -1 if none is reachable)
+def find_anchors(n, adj_start, adj_vertex, adj_rest, inv_mass, anchor, tether, cols, spacing):
+    """Fill anchor[k] (the nearest fixed vertex along the edges, or -1 if none is reachable)
     and tether[k] (the rest distance to it in the grid); Dijkstra with a binary heap of
     (distance, vertex) and lazy deletion."""
     total = adj_start[n] + n + 1
@@ -27,7 +27,7 @@ def find_anchors(n, adj_start, adj_vertex, adj_rest, pinned, anchor, tether, col
     for k in range(n):
         anchor[k] = -1
         tether[k] = 0.0
-        if pinned[k] == 1:
+        if inv_mass[k] == 0.0:
             anchor[k] = k
             heap_d[size] = 0.0
             heap_v[size] = k
