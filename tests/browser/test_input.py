@@ -1,4 +1,6 @@
 """Pointer input in a real browser: mouse, right-click pins, touch, devicePixelRatio 2."""
+import time
+
 from browser_helpers import free_vertex, near
 
 COLS, ROWS = 40, 30      # the default preset (curtain)
@@ -86,9 +88,11 @@ def test_pinned_vertex_dragged_elsewhere_stays_there(open_page):
     assert near(st['screen'][k], target, TOL)
 
 
-def touch(cdp, kind, points):
-    cdp.send('Input.dispatchTouchEvent',
-             {'type': kind, 'touchPoints': [{'x': x, 'y': y} for x, y in points]})
+def touch(cdp, kind, points, timestamp=None):
+    event = {'type': kind, 'touchPoints': [{'x': x, 'y': y} for x, y in points]}
+    if timestamp is not None:       # seconds; sets the events' timeStamp, whatever the load
+        event['timestamp'] = timestamp
+    cdp.send('Input.dispatchTouchEvent', event)
 
 
 def test_touch_drag_and_double_tap_pin(open_page):
@@ -117,8 +121,10 @@ def test_touch_drag_and_double_tap_pin(open_page):
     pg.js('clothApp.setPaused(true)')
     before = pg.state()['pinned']
     x, y = pg.state()['screen'][free_vertex(pg.state(), COLS, ROWS) - 3]
-    for kind in ('touchStart', 'touchEnd', 'touchStart', 'touchEnd'):  # back to back
-        touch(cdp, kind, [(x, y)] if kind == 'touchStart' else [])
+    t0 = time.time()
+    for i, kind in enumerate(('touchStart', 'touchEnd', 'touchStart', 'touchEnd')):
+        # 50 ms apart in event time, however slow the machine is at delivering them
+        touch(cdp, kind, [(x, y)] if kind == 'touchStart' else [], t0 + 0.05 * i)
     changed = [i for i, (a, b) in enumerate(zip(before, pg.state()['pinned'])) if a != b]
     assert len(changed) == 1 and pg.state()['pinned'][changed[0]]
 
