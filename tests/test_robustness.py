@@ -31,14 +31,17 @@ def kinetic(cloth):
     return sum(((cloth.pos[i] - cloth.prev[i]) / h) ** 2 for i in range(2 * cloth.n_verts)) / 2
 
 
-def play(scene, frames, on_frame):
-    cloth = load(json.dumps(scene))
+def play(scene, frames, on_frame, before_frame=None):
+    """cloth.api.simulate, with hooks before (after that frame's actions) and after a frame."""
+    cloth = load(json.dumps(scene)) if isinstance(scene, dict) else scene
     actions = cloth.scene.actions
     nxt = 0
     for f in range(frames):
         while nxt < len(actions) and actions[nxt].frame <= f:
             apply_action(cloth, actions[nxt])
             nxt += 1
+        if before_frame:
+            before_frame(f, cloth)
         cloth.frame()
         on_frame(f, cloth)
     return cloth
@@ -148,18 +151,13 @@ def test_fuzz_no_nan_pins_exact_only_validation_errors(scene, frames):
         assert all(math.isfinite(v) for v in cloth.pos)
         fixed_before.clear()
 
-    # Record where every fixed vertex is after the actions of a frame, before the step.
-    actions = cloth.scene.actions
-    nxt = 0
-    for f in range(frames):
-        while nxt < len(actions) and actions[nxt].frame <= f:
-            apply_action(cloth, actions[nxt])
-            nxt += 1
+    def record(f, cloth):
+        # Where every fixed vertex is after the actions of a frame, before the step.
         for k in range(cloth.n_verts):
             if cloth.inv_mass[k] == 0.0:
                 fixed_before[k] = (cloth.pos[2 * k], cloth.pos[2 * k + 1])
-        cloth.frame()
-        check(f, cloth)
+
+    play(cloth, frames, check, record)
     cloth.measure()
     assert all(math.isfinite(v) for v in list(cloth.diff) + list(cloth.stress))
 
