@@ -74,7 +74,6 @@ class Cloth:
         self.anchor = i32(n)
         self.tether = f64(n)
         self.anchors_stale = True
-        self.frames_done = 0
         # Constraint projections done so far (edges + tethers): the benchmark's cost measure.
         self.projections = 0
         # Vertex-steps whose speed hit max_speed: non-zero means unstable settings.
@@ -180,7 +179,6 @@ def frame(cloth):
         cloth.anchors_stale = False
     for s in range(cloth.substeps):
         step(cloth)
-    cloth.frames_done += 1
 
 
 def step(cloth):
