@@ -24,7 +24,7 @@ OPS = ['grab', 'move', 'release', 'pin', 'unpin']
 
 SCENE_KEYS = ['cols', 'rows', 'spacing', 'pins', 'gravity', 'dt', 'substeps', 'iterations',
               'damping', 'solver', 'actions', 'tethers', 'shear', 'compliance', 'tolerance',
-              'max_speed', 'name']
+              'max_speed', 'sleep', 'name']
 ACTION_KEYS = ['frame', 'op', 'vertex', 'to']
 
 
@@ -42,8 +42,9 @@ def fail(message):
 # configuration the benchmark found (see README): small steps plus long-range tethers.
 def solver_defaults(solver):
     if solver == 'jakobsen':
-        return {'substeps': 1, 'iterations': 20, 'tethers': False, 'tolerance': 0.0}
-    return {'substeps': 8, 'iterations': 2, 'tethers': True, 'tolerance': 1e-4}
+        return {'substeps': 1, 'iterations': 20, 'tethers': False, 'tolerance': 0.0,
+                'sleep': False}
+    return {'substeps': 8, 'iterations': 2, 'tethers': True, 'tolerance': 1e-4, 'sleep': True}
 
 
 class Scene:
@@ -66,6 +67,7 @@ class Scene:
         self.shear = False
         self.compliance = 0.0
         self.tolerance = 0.0
+        self.sleep = False
         self.actions = []      # list of Action, sorted by frame (stable)
 
 
@@ -152,6 +154,7 @@ def scene_from_object(obj):
     s.iterations = defaults['iterations']
     s.tethers = defaults['tethers']
     s.tolerance = defaults['tolerance']
+    s.sleep = defaults['sleep']
 
     if has_key(obj, 'pins'):
         pins = obj['pins']
@@ -184,6 +187,8 @@ def scene_from_object(obj):
         s.tethers = boolean(obj['tethers'], 'tethers')
     if has_key(obj, 'shear'):
         s.shear = boolean(obj['shear'], 'shear')
+    if has_key(obj, 'sleep'):
+        s.sleep = boolean(obj['sleep'], 'sleep')
     if has_key(obj, 'compliance'):
         s.compliance = number(obj['compliance'], 'compliance', 0.0, 1e3, False,
                               'from 0 to 1000 m/N')

@@ -13,9 +13,22 @@ import math
 
 from cloth.host import f64, i32
 from cloth.scene import SceneError
-from cloth.solve import integrate, sweep_jakobsen, sweep_xpbd, project_tethers, clear
+from cloth.solve import integrate, sweep_jakobsen, sweep_xpbd, project_tethers, clear, \
+    max_motion2, copy_into
 from cloth.measure import deformation, nearest_vertex
 from cloth.tethers import find_anchors
+
+# Sleep: a cloth is at rest, and is not stepped again until an operation (grab, move,
+# release, pin, unpin) changes it, once for SLEEP_TIME seconds of frames no free vertex moved
+# more than SLEEP_MOTION of the cloth's extent in a frame and none ended more than SLEEP_DRIFT
+# of it from where it was at the window's start. Relative to the extent because that is what
+# the page fits to the screen: both are a fraction of a pixel there. Not zero, because a
+# settled cloth can keep a tiny limit cycle of the solver (measured: 40 um per frame in a
+# slack hang); two tests, because a small swing whose period fits the window returns to its
+# start, and a slow creep has no fast frame.
+SLEEP_MOTION = 1e-4
+SLEEP_DRIFT = 1e-3
+SLEEP_TIME = 1.0
 
 
 class Cloth:
@@ -78,6 +91,16 @@ class Cloth:
         self.projections = 0
         # Vertex-steps whose speed hit max_speed: non-zero means unstable settings.
         self.clamped = 0
+        # Sleep (scene key `sleep`): frames in a row that were still, and whether at rest.
+        self.use_sleep = scene.sleep
+        extent = max(max(cols, rows) - 1, 1) * h
+        self.still_motion2 = SLEEP_MOTION * SLEEP_MOTION * extent * extent
+        self.drift2 = SLEEP_DRIFT * SLEEP_DRIFT * extent * extent
+        self.sleep_frames = int(math.ceil(SLEEP_TIME / scene.dt))
+        self.still_frames = 0
+        self.last_pos = f64(2 * n if scene.sleep else 0)     # positions a frame ago
+        self.still_from = f64(2 * n if scene.sleep else 0)   # ... at the window's start
+        self.asleep = False
 
     def build_edges(self, shear):
         """Horizontal and vertical grid neighbours (rest = spacing), vertex by vertex; then,
@@ -177,8 +200,30 @@ def frame(cloth):
         find_anchors(cloth.n_verts, cloth.adj_start, cloth.adj_vertex, cloth.adj_rest,
                      cloth.inv_mass, cloth.anchor, cloth.tether, cloth.cols, cloth.spacing)
         cloth.anchors_stale = False
+    if cloth.asleep:
+        return
     for s in range(cloth.substeps):
         step(cloth)
+    if cloth.use_sleep:
+        settle(cloth)
+
+
+def settle(cloth):
+    """Count still frames; after a window of them, sleep if nothing drifted (see SLEEP_TIME)."""
+    n = cloth.n_verts
+    moved2 = max_motion2(cloth.pos, cloth.last_pos, cloth.inv_mass, n)
+    copy_into(cloth.last_pos, cloth.pos, n + n)
+    if moved2 > cloth.still_motion2:
+        cloth.still_frames = 0
+        return
+    if cloth.still_frames == 0:
+        copy_into(cloth.still_from, cloth.pos, n + n)
+    cloth.still_frames += 1
+    if cloth.still_frames > cloth.sleep_frames:
+        if max_motion2(cloth.pos, cloth.still_from, cloth.inv_mass, n) <= cloth.drift2:
+            cloth.asleep = True
+        else:
+            cloth.still_frames = 0
 
 
 def step(cloth):
@@ -235,6 +280,8 @@ def rest_at(cloth, k):
 
 def refresh(cloth, k):
     """inv_mass follows pinned and held; the tether anchors follow the fixed set."""
+    cloth.asleep = False
+    cloth.still_frames = 0
     fixed = cloth.pinned[k] == 1 or cloth.held[k] == 1
     was_fixed = cloth.inv_mass[k] == 0.0
     cloth.inv_mass[k] = 0.0 if fixed else 1.0
@@ -256,6 +303,8 @@ def move(cloth, k, x, y):
     check_vertex(cloth, k)
     if cloth.held[k] == 0:
         raise SceneError('vertex: move needs a held vertex (grab it first)')
+    if x == cloth.pos[k + k] and y == cloth.pos[k + k + 1]:
+        return  # a hand held still changes nothing, and must not keep the cloth awake
     place(cloth, k, x, y)
     refresh(cloth, k)
 

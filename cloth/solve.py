@@ -195,6 +195,26 @@ def project_tethers(pos, prev, inv_mass, anchor, tether, n):
             pos[i + 1] -= dy * s
 
 
+def max_motion2(pos, prev, inv_mass, n):
+    """The largest squared distance between a free vertex's positions in `pos` and `prev`."""
+    worst = 0.0
+    for k in range(n):
+        if inv_mass[k] == 0.0:
+            continue
+        i = k + k
+        dx = pos[i] - prev[i]
+        dy = pos[i + 1] - prev[i + 1]
+        d2 = dx * dx + dy * dy
+        if d2 > worst:
+            worst = d2
+    return worst
+
+
+def copy_into(dst, src, m):
+    for i in range(m):
+        dst[i] = src[i]
+
+
 def clear(values, m):
     for e in range(m):
         values[e] = 0.0

@@ -119,6 +119,7 @@ def wild_scene(draw):
          'damping': draw(st.floats(0, 10)), 'dt': draw(st.sampled_from([1 / 60, 0.1, 1.0])),
          'gravity': [draw(st.floats(-100, 100)), draw(st.floats(-1000, 100))],
          'shear': draw(st.booleans()), 'tethers': draw(st.booleans()),
+         'sleep': draw(st.booleans()),
          'compliance': draw(st.sampled_from([0.0, 1e-5, 0.1, 10.0]))}
     ops = []
     for _ in range(draw(st.integers(0, 12))):

@@ -71,6 +71,7 @@ BAD = [
     (with_keys(solver='verlet'), 'solver:'),
     (with_keys(solver=3), 'solver:'),
     (with_keys(tethers='yes'), 'tethers:'),
+    (with_keys(sleep=1), 'sleep:'),
     (with_keys(shear=1), 'shear:'),
     (with_keys(compliance=-1e-6), 'compliance:'),
     (with_keys(tolerance=2), 'tolerance:'),

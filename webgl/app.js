@@ -22,7 +22,7 @@
     cloth: null, m: null, sceneText: '', sceneObj: null, view: null,
     preset: 'curtain', params: null,
     mode: 'strain', scaleMode: 'auto', fullScale: 0.05,
-    paused: false, acc: 0, last: -1, frames: 0, dirty: true, needMeasure: true,
+    paused: false, acc: 0, last: -1, frames: 0, renders: 0, dirty: true, needMeasure: true,
     simMs: NaN, renderMs: NaN, fps: NaN, lastReadout: 0, scale: 0,
   };
 
@@ -193,6 +193,13 @@
 
   function simulate(n) {
     const m = s.m;
+    if (s.cloth.asleep) {
+      // At rest (the core stopped stepping it): nothing to step, measure or draw until an
+      // operation wakes it.
+      s.frames += n;
+      s.simMs = Number.isFinite(s.simMs) ? s.simMs + EMA * (0 - s.simMs) : 0;
+      return;
+    }
     const t0 = performance.now();
     for (let i = 0; i < n; i++) m.frame();
     m.measure();
@@ -218,6 +225,7 @@
     const ms = performance.now() - t0;
     s.renderMs = Number.isFinite(s.renderMs) ? s.renderMs + EMA * (ms - s.renderMs) : ms;
     s.dirty = false;
+    s.renders++;
   }
 
   function advance(frames) {
@@ -239,7 +247,7 @@
     const c = s.cloth;
     ui.setReadouts({
       simMs: s.simMs, renderMs: s.renderMs, fps: s.fps, rms: c.rms_diff, max: c.max_diff,
-      size: c.cols + '×' + c.rows + ' · ' + c.n_edges + ' edges',
+      size: c.cols + '×' + c.rows + ' · ' + c.n_edges + ' edges' + (c.asleep ? ' · at rest' : ''),
     });
     ui.setLegend(s.scale, s.scaleMode === 'auto');
   }
@@ -366,6 +374,7 @@
         webgl: renderer.ok ? renderer.version : 0, lost: !!renderer.lost, restores: renderer.restores || 0,
         drawCalls: renderer.drawCalls || 0, paused: s.paused, mode: s.mode, scaleMode: s.scaleMode,
         scale: s.scale, fullScale: s.fullScale, frames: s.frames, preset: s.preset, params: s.params,
+        asleep: !!(s.cloth && s.cloth.asleep), renders: s.renders,
         error: ui.errorText(), note: ui.noteText(), scene: s.sceneText,
         canvas: [canvas.width, canvas.height], dpr: window.devicePixelRatio || 1,
       };

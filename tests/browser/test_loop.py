@@ -1,4 +1,6 @@
 """The loop: fixed dt, an accumulator, and a cap on catch-up (Playwright's fake clock)."""
+import json
+
 
 
 def test_a_long_gap_never_injects_a_big_step(open_page):
@@ -17,3 +19,34 @@ def test_a_long_gap_never_injects_a_big_step(open_page):
     assert f2 - f1 <= 4 + 2, (f1, f2)   # MAX_CATCHUP, then one frame per 1/60 s
     st = pg.state()
     assert all(v == v and abs(v) < 1e3 for p in st['positions'] for v in p)
+
+
+def test_a_cloth_at_rest_sleeps_until_touched(open_page):
+    # No work where nothing changes: once the core puts a settled cloth to sleep, the page
+    # neither steps, measures nor redraws it, and says so; a drag wakes it.
+    pg = open_page()
+    pg.clock.install(time=0)
+    pg.reload()
+    pg.wait_for_function('window.clothApp !== undefined')
+    scene = dict(cols=12, rows=10, spacing=0.1, pins=list(range(12)), damping=2.0)
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps(scene))
+    pg.clock.pause_at(5000)
+    pg.clock.run_for(3000)                  # 3 s: a curtain at rest sleeps after 1 s
+    info = pg.info()
+    assert info['asleep'], info
+    pg.wait_for_function('/at rest/.test(document.getElementById("r-size").textContent)')
+    renders, frames = info['renders'], info['frames']
+    pg.clock.run_for(1000)
+    info = pg.info()
+    assert info['frames'] >= frames + 58      # time still passes ...
+    assert info['renders'] == renders         # ... but nothing is drawn again
+    st = pg.state()
+    x, y = st['screen'][9 * 12 + 5]           # the bottom row, middle
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    pg.mouse.move(x + 60, y + 30, steps=3)
+    pg.clock.run_for(200)
+    info = pg.info()
+    assert not info['asleep'] and info['renders'] > renders
+    assert pg.state()['positions'] != st['positions']
+    pg.mouse.up()

@@ -95,6 +95,10 @@ SCENES = {
     'collapsed-pins': (grid(4, 3, pins=[0, 1], actions=[
         {'frame': 0, 'op': 'grab', 'vertex': 0, 'to': [0.5, 0.5]},
         {'frame': 0, 'op': 'grab', 'vertex': 1, 'to': [0.5, 0.5]}]), 20),
+    # Sleeps after a second at rest, is woken by a drag, and rests again.
+    'default-sleep-and-wake': (grid(6, 5, pins=list(range(6)), damping=3.0, actions=[
+        {'frame': 100, 'op': 'grab', 'vertex': 27, 'to': [0.7, -0.9]},
+        {'frame': 110, 'op': 'release', 'vertex': 27}]), 700),
     'teleport': (grid(5, 5, pins=[0, 4], actions=[
         {'frame': 1, 'op': 'grab', 'vertex': 22, 'to': [100.0, -100.0]},
         {'frame': 2, 'op': 'release', 'vertex': 22}]), 40),
@@ -143,7 +147,8 @@ def scenes(draw):
     for key, strategy in [('substeps', st.integers(1, 4)), ('iterations', st.integers(0, 8)),
                           ('damping', st.floats(0, 3)), ('tethers', st.booleans()),
                           ('shear', st.booleans()), ('compliance', st.sampled_from([0, 1e-4, 0.01])),
-                          ('tolerance', st.sampled_from([0, 1e-3])),
+                          ('tolerance', st.sampled_from([0, 1e-3])), ('sleep', st.booleans()),
+                          ('dt', st.sampled_from([1 / 60, 0.25])),
                           ('gravity', st.tuples(coord, st.floats(-30, 30)).map(list))]:
         if draw(st.booleans()):
             s[key] = draw(strategy)
