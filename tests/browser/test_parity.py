@@ -99,6 +99,11 @@ SCENES = {
     'default-sleep-and-wake': (grid(6, 5, pins=list(range(6)), damping=3.0, actions=[
         {'frame': 100, 'op': 'grab', 'vertex': 27, 'to': [0.7, -0.9]},
         {'frame': 110, 'op': 'release', 'vertex': 27}]), 700),
+    # Pulled beyond its reach and let go: the release relieves the stretch (solve.relieve).
+    'default-overpull-release': (grid(7, 7, pins=[0, 3, 6], actions=[
+        {'frame': 30, 'op': 'grab', 'vertex': 45},
+        {'frame': 40, 'op': 'move', 'vertex': 45, 'to': [0.9, -1.6]},
+        {'frame': 60, 'op': 'release', 'vertex': 45}]), 80),
     'teleport': (grid(5, 5, pins=[0, 4], actions=[
         {'frame': 1, 'op': 'grab', 'vertex': 22, 'to': [100.0, -100.0]},
         {'frame': 2, 'op': 'release', 'vertex': 22}]), 40),
