@@ -37,7 +37,67 @@ def parse_json(text):
 
 
 def to_json(value):
-    return _json.dumps(value, separators=(',', ':'), allow_nan=False)
+    """JSON text exactly as JS's JSON.stringify writes it, so that the CLI and the page print
+    the same characters (Python writes 1.0 and 1e-07 where JS writes 1 and 1e-7)."""
+    out = []
+    _write_json(value, out)
+    return ''.join(out)
+
+
+def _write_json(value, out):
+    if value is None or isinstance(value, (bool, str)):
+        out.append(_json.dumps(value))
+    elif isinstance(value, (int, float)):
+        out.append(js_number(value))
+    elif isinstance(value, (list, tuple)):
+        out.append('[')
+        for i, item in enumerate(value):
+            if i:
+                out.append(',')
+            _write_json(item, out)
+        out.append(']')
+    elif isinstance(value, dict):
+        out.append('{')
+        for i, (key, item) in enumerate(value.items()):
+            if i:
+                out.append(',')
+            out.append(_json.dumps(str(key)))
+            out.append(':')
+            _write_json(item, out)
+        out.append('}')
+    else:
+        raise TypeError('not JSON: %r' % (value,))
+
+
+def js_number(x):
+    """A finite number as JS's Number.prototype.toString writes it (ECMA-262 Number::toString):
+    the shortest digits that round-trip (Python's repr finds the same ones), in plain notation
+    for 1e-7 <= |x| < 1e21, else as d.ddde+n."""
+    x = float(x)
+    if not _math.isfinite(x):
+        raise ValueError('JSON has no NaN or Infinity')
+    if x == 0.0:
+        return '0'
+    sign = '-' if x < 0 else ''
+    mantissa, _, exponent = repr(abs(x)).partition('e')
+    whole, _, frac = mantissa.partition('.')
+    digits = (whole + frac).lstrip('0')
+    # value = 0.digits x 10^n, with n counted from the decimal point of `mantissa`
+    n = len(whole.lstrip('0')) if whole.strip('0') else -(len(frac) - len(frac.lstrip('0')))
+    n += int(exponent or 0)
+    digits = digits.rstrip('0')
+    k = len(digits)
+    if k <= n <= 21:
+        text = digits + '0' * (n - k)
+    elif 0 < n <= 21:
+        text = digits[:n] + '.' + digits[n:]
+    elif -6 < n <= 0:
+        text = '0.' + '0' * (-n) + digits
+    else:
+        e = n - 1
+        text = digits[0] + ('.' + digits[1:] if k > 1 else '') + 'e' + ('+' if e >= 0 else '-') + \
+            str(abs(e))
+    return sign + text
 
 
 def kind_of(value):
