@@ -18,14 +18,6 @@ from cloth.solve import integrate, sweep_jakobsen, sweep_xpbd, project_tethers, 
 from cloth.measure import deformation, nearest_vertex
 from cloth.tethers import find_anchors
 
-# Sleep: a cloth is at rest, and is not stepped again until an operation (grab, move,
-# release, pin, unpin) changes it, once for SLEEP_TIME seconds of frames no free vertex moved
-# more than SLEEP_MOTION of the cloth's extent in a frame and none ended more than SLEEP_DRIFT
-# of it from where it was at the window's start. Relative to the extent because that is what
-# the page fits to the screen: both are a fraction of a pixel there. Not zero, because a
-# settled cloth can keep a tiny limit cycle of the solver (measured: 40 um per frame in a
-# slack hang); two tests, because a small swing whose period fits the window returns to its
-# start, and a slow creep has no fast frame.
 # When the fixed set changes (a release, a pin, an unpin), the next step first takes out,
 # without making velocity, the stretch beyond RELIEVE_SLACK that the change reveals: up to
 # RELIEVE_PASSES passes of solve.relieve. Only then, not every step: within a drag the stretch
@@ -34,6 +26,14 @@ from cloth.tethers import find_anchors
 RELIEVE_SLACK = 0.005
 RELIEVE_PASSES = 4
 
+# Sleep: a cloth is at rest, and is not stepped again until an operation (grab, move,
+# release, pin, unpin) changes it, once for SLEEP_TIME seconds of frames no free vertex moved
+# more than SLEEP_MOTION of the cloth's extent in a frame and none ended more than SLEEP_DRIFT
+# of it from where it was at the window's start. Relative to the extent because that is what
+# the page fits to the screen: both are a fraction of a pixel there. Not zero, because a
+# settled cloth can keep a tiny limit cycle of the solver (measured: 40 um per frame in a
+# slack hang); two tests, because a small swing whose period fits the window returns to its
+# start, and a slow creep has no fast frame.
 SLEEP_MOTION = 1e-4
 SLEEP_DRIFT = 1e-3
 SLEEP_TIME = 1.0
