@@ -386,6 +386,59 @@ HARNESS_JS = r"""
     }
     return {identical: same, max_abs_diff: maxd};
   };
+  // ---- gestures: a hand pulling beyond reach, letting go, flicking -------------------------
+  // Speeds are velocities, (pos - prev) / h at the end of a frame, not distances per frame:
+  // a cloth relieved of stretch jumps back to shape without moving fast.
+  function fastest(cl) {
+    let v = 0;
+    for (let k = 0; k < cl.n_verts; k++) {
+      const s = Math.hypot(cl.pos[2 * k] - cl.prev[2 * k], cl.pos[2 * k + 1] - cl.prev[2 * k + 1]);
+      if (s > v) v = s;
+    }
+    return v / cl.h;
+  }
+
+  // Hang, grab vertex k, pull it by (dx, dy) over a second, hold a second, let go.
+  B.overpull = function (text, k, dx, dy) {
+    const cl = clothCore.load(text), ops = clothCore.ops(cl);
+    for (let f = 0; f < 120; f++) ops.frame();
+    const x0 = cl.pos[2 * k], y0 = cl.pos[2 * k + 1];
+    ops.grab(k, x0, y0);
+    let held = 0;
+    for (let f = 0; f < 120; f++) {
+      const t = Math.min(1, f / 60);
+      ops.move(k, x0 + dx * t, y0 + dy * t);
+      ops.frame();
+      ops.measure();
+      held = Math.max(held, cl.max_strain);
+    }
+    ops.release(k);
+    let after = 0, over5 = 0;
+    for (let f = 0; f < 30; f++) {
+      ops.frame();
+      after = Math.max(after, fastest(cl));
+      let n5 = 0;
+      for (let i = 0; i < cl.n_verts; i++) {
+        if (Math.hypot(cl.pos[2 * i] - cl.prev[2 * i], cl.pos[2 * i + 1] - cl.prev[2 * i + 1]) / cl.h > 5) n5++;
+      }
+      over5 = Math.max(over5, n5);
+    }
+    return {held_max_strain: held, after_fastest: after, after_over_5: over5};
+  };
+
+  // A free cloth in zero gravity, vertex k dragged along x at `speed` for 1/3 s and let go:
+  // the centre of mass's speed over the next half second.
+  B.flick = function (text, k, speed) {
+    const cl = clothCore.load(text), ops = clothCore.ops(cl);
+    const x0 = cl.pos[2 * k], y0 = cl.pos[2 * k + 1];
+    ops.grab(k, x0, y0);
+    for (let f = 1; f <= 20; f++) { ops.move(k, x0 + speed * f / 60, y0); ops.frame(); }
+    ops.release(k);
+    const cx = () => { let s = 0; for (let i = 0; i < cl.n_verts; i++) s += cl.pos[2 * i]; return s / cl.n_verts; };
+    const c0 = cx();
+    for (let f = 0; f < 30; f++) ops.frame();
+    return (cx() - c0) / 0.5;
+  };
   return true;
 })()
 """
@@ -902,6 +955,49 @@ def json_safe(x):
 
 # ---- main ------------------------------------------------------------------------------------
 
+GESTURE_N = 30
+
+
+def gestures(progress):
+    """Pulling beyond reach, letting go, flicking, on a 1 m 30x30 curtain pinned at every
+    third top vertex (damping 0.5/s), default against the seed's method; in the page."""
+    from playwright.sync_api import sync_playwright
+    n = GESTURE_N
+    h = WIDTH / (n - 1)
+    pins = list(range(0, n, 3)) + ([n - 1] if (n - 1) % 3 else [])
+    k = (n - 1) * n + n // 2
+    rows = []
+    with sync_playwright() as p:
+        browser, page = open_page(p, progress)
+        try:
+            for label, over in [('default', {}), ('jakobsen', {'solver': 'jakobsen'})]:
+                scene = dict({'cols': n, 'rows': n, 'spacing': h, 'pins': pins,
+                              'damping': 0.5}, **over)
+                for dx, dy in [(0.0, -0.3), (1.0, -1.5)]:
+                    r = page.evaluate('([t, k, x, y]) => __bench.overpull(t, k, x, y)',
+                                      [json.dumps(scene), k, dx, dy])
+                    rows.append(('%s: pull (%g, %g) m beyond, hold, let go' % (label, dx, dy),
+                                 'held max strain %.2f; then fastest %.1f m/s, at most %d '
+                                 'vertices above 5 m/s' % (r['held_max_strain'],
+                                                            r['after_fastest'],
+                                                            r['after_over_5'])))
+                free = dict({'cols': n, 'rows': n, 'spacing': h, 'gravity': [0, 0]}, **over)
+                for speed in [1.0, 3.0, 10.0]:
+                    v = page.evaluate('([t, k, s]) => __bench.flick(t, k, s)',
+                                      [json.dumps(free), (n // 2) * n + n // 2, speed])
+                    rows.append(('%s: flick at %g m/s, let go' % (label, speed),
+                                 'centre of mass then moves at %.2f m/s' % v))
+                progress('gestures: %s done' % label)
+        finally:
+            browser.close()
+    lines = ['# Gestures', '', '`python -m cloth.bench --gestures`, %s: %s' % (
+        time.strftime('%Y-%m-%d %H:%M:%S %Z'), gestures.__doc__.split('\n')[0].strip() + ' ' +
+        ' '.join(x.strip() for x in gestures.__doc__.split('\n')[1:]).strip()), '',
+        '| gesture | result |', '|---|---|']
+    lines += ['| %s | %s |' % r for r in rows]
+    return '\n'.join(lines) + '\n'
+
+
 def bench(quick, progress):
     try:
         from playwright.sync_api import sync_playwright
@@ -943,8 +1039,22 @@ def main(argv=None):
                     help='30x30 only, one repetition (under a minute)')
     ap.add_argument('--out', default=os.path.join(ROOT, 'bench', 'results'),
                     help='folder for bench.md / .json / .svg (default: bench/results)')
+    ap.add_argument('--gestures', action='store_true',
+                    help='only the gestures: pulling beyond reach, letting go, flicking '
+                         '(OUT/gestures.md)')
     args = ap.parse_args(argv)
     progress = Progress()
+    if args.gestures:
+        try:
+            md = gestures(progress)
+        except BenchError as err:
+            sys.stderr.write('error: %s\n' % err)
+            return 1
+        os.makedirs(args.out, exist_ok=True)
+        with open(os.path.join(args.out, 'gestures.md'), 'w', encoding='utf-8') as f:
+            f.write(md)
+        sys.stdout.write(md)
+        return 0
     try:
         rows, groups, sol, chromium = bench(args.quick, progress)
     except BenchError as err:

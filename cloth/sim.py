@@ -16,15 +16,20 @@ from cloth.scene import SceneError
 from cloth.solve import integrate, sweep_jakobsen, sweep_xpbd, project_tethers, relieve, clear, \
     max_motion2, copy_into
 from cloth.measure import deformation, nearest_vertex
-from cloth.tethers import find_anchors
+from cloth.tethers import find_anchors, list_fixed, over_reach
 
-# When the fixed set changes (a release, a pin, an unpin), the next step first takes out,
-# without making velocity, the stretch beyond RELIEVE_SLACK that the change reveals: up to
-# RELIEVE_PASSES passes of solve.relieve. Only then, not every step: within a drag the stretch
-# at the hand is what carries its motion into the cloth (measured: a 10 m/s flick kept 11.4
-# m/s of centre-of-mass speed this way, 6.9 with relieve after every stretched step).
+# When a vertex is let go (released, unpinned), the next step first takes out, without making
+# velocity, the stretch beyond RELIEVE_SLACK that this reveals: passes of solve.relieve until
+# none is left, at most RELIEVE_PASSES. Only then: not when a vertex is fixed (relieving
+# there would take a hand's yank out of the cloth), and not every step (within a drag the
+# stretch at the hand is what carries its motion into the cloth).
 RELIEVE_SLACK = 0.005
-RELIEVE_PASSES = 4
+RELIEVE_PASSES = 16
+
+# While a hand pulls the cloth beyond its reach, the tethers stretch with it, up to this
+# factor (tethers.over_reach). Past it they hold the rest of the cloth near the pins: a vertex
+# teleported 100 m would otherwise drag the whole cloth after it at hundreds of m/s.
+MAX_STRETCH = 3.0
 
 # Sleep: a cloth is at rest, and is not stepped again until an operation (grab, move,
 # release, pin, unpin) changes it, once for SLEEP_TIME seconds of frames no free vertex moved
@@ -84,7 +89,7 @@ class Cloth:
 
         self.build_edges(scene.shear)
         self.lam = f64(self.n_edges)
-        # Set when the fixed set changes: the next step starts with `relieve`.
+        # Set when a vertex is let go: the next step starts with `relieve`.
         self.relieve_pending = False
         self.diff = f64(self.n_edges)
         self.stress = f64(n)
@@ -97,6 +102,12 @@ class Cloth:
         self.anchor = i32(n)
         self.tether = f64(n)
         self.anchors_stale = True
+        # The fixed vertices (listed when the anchors are), how many are held, and the factor
+        # the tethers are scaled by while a hand pulls beyond reach (tethers.over_reach).
+        self.fixed = i32(n)
+        self.n_fixed = 0
+        self.n_held = 0
+        self.stretch = 1.0
         # Constraint projections done so far (edges + tethers): the benchmark's cost measure.
         self.projections = 0
         # Vertex-steps whose speed hit max_speed: non-zero means unstable settings.
@@ -206,12 +217,19 @@ class Cloth:
 
 def frame(cloth):
     """Advance one frame: `substeps` steps of dt / substeps each."""
-    if cloth.use_tethers and cloth.anchors_stale:
-        find_anchors(cloth.n_verts, cloth.adj_start, cloth.adj_vertex, cloth.adj_rest,
-                     cloth.inv_mass, cloth.anchor, cloth.tether, cloth.cols, cloth.spacing)
-        cloth.anchors_stale = False
     if cloth.asleep:
         return
+    if cloth.use_tethers:
+        if cloth.anchors_stale:
+            find_anchors(cloth.n_verts, cloth.adj_start, cloth.adj_vertex, cloth.adj_rest,
+                         cloth.inv_mass, cloth.anchor, cloth.tether, cloth.cols, cloth.spacing)
+            cloth.n_fixed = list_fixed(cloth.inv_mass, cloth.n_verts, cloth.fixed)
+            cloth.anchors_stale = False
+        cloth.stretch = 1.0
+        if cloth.n_held > 0:
+            cloth.stretch = min(MAX_STRETCH, over_reach(cloth.pos, cloth.held, cloth.n_verts,
+                                                        cloth.fixed, cloth.n_fixed, cloth.cols,
+                                                        cloth.spacing))
     for s in range(cloth.substeps):
         step(cloth)
     if cloth.use_sleep:
@@ -246,8 +264,10 @@ def step(cloth):
     # goes without becoming speed. Not for compliant edges: their stretch is the material's.
     if cloth.relieve_pending and cloth.use_xpbd and cloth.alpha == 0.0:
         for p in range(RELIEVE_PASSES):
-            relieve(pos, cloth.prev, inv_mass, cloth.edge_a, cloth.edge_b, cloth.rest, m,
-                    cloth.anchor, cloth.tether, n if cloth.use_tethers else 0, RELIEVE_SLACK)
+            if relieve(pos, cloth.prev, inv_mass, cloth.edge_a, cloth.edge_b, cloth.rest, m,
+                       cloth.anchor, cloth.tether, n if cloth.use_tethers else 0, cloth.stretch,
+                       RELIEVE_SLACK) == 0:
+                break
     cloth.relieve_pending = False
     cloth.clamped += integrate(pos, cloth.prev, inv_mass, n, cloth.keep, cloth.ax, cloth.ay,
                                cloth.max_step)
@@ -259,7 +279,7 @@ def step(cloth):
     # the tolerance after one sweep. Projecting them again before every sweep costs n per sweep
     # and buys nothing (measured: same strain on the benchmark's scenes).
     if cloth.use_tethers and cloth.iterations > 0:
-        project_tethers(pos, cloth.prev, inv_mass, cloth.anchor, cloth.tether, n)
+        project_tethers(pos, cloth.prev, inv_mass, cloth.anchor, cloth.tether, n, cloth.stretch)
         cloth.projections += n
     for it in range(cloth.iterations):
         if cloth.use_xpbd:
@@ -304,6 +324,7 @@ def refresh(cloth, k):
     cloth.inv_mass[k] = 0.0 if fixed else 1.0
     if fixed != was_fixed:
         cloth.anchors_stale = True
+    if was_fixed and not fixed:
         cloth.relieve_pending = True
     rest_at(cloth, k)
 
@@ -311,6 +332,8 @@ def refresh(cloth, k):
 def grab(cloth, k, x, y):
     """Hold vertex k fixed at (x, y)."""
     check_vertex(cloth, k)
+    if cloth.held[k] == 0:
+        cloth.n_held += 1
     cloth.held[k] = 1
     place(cloth, k, x, y)
     refresh(cloth, k)
@@ -330,6 +353,8 @@ def move(cloth, k, x, y):
 def release(cloth, k):
     """Let go: a pinned vertex stays pinned where it was left, a free one falls from rest."""
     check_vertex(cloth, k)
+    if cloth.held[k] == 1:
+        cloth.n_held -= 1
     cloth.held[k] = 0
     refresh(cloth, k)
 

@@ -70,3 +70,18 @@ def test_json_matches_the_table(quick):
     # The hand-written kernel is the seed's method exactly: same positions, bit for bit.
     assert data['speed_of_light']['bit_identical'] is True
     assert (out / 'bench-quick.svg').read_text().startswith('<svg')
+
+
+def test_gestures_table(tmp_path):
+    # `--gestures`: pulling beyond reach, letting go, flicking, in the page, for both solvers.
+    pytest.importorskip('playwright.sync_api')
+    proc = subprocess.run([sys.executable, '-m', 'cloth.bench', '--gestures', '--out',
+                           str(tmp_path)], cwd=ROOT, capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    md = (tmp_path / 'gestures.md').read_text()
+    assert proc.stdout == md
+    rows = re.findall(r'^\| (default|jakobsen): (.+?) \| (.+) \|$', md, re.M)
+    assert len(rows) == 10, md
+    for solver, gesture, result in rows:
+        numbers = [float(x) for x in re.findall(r'-?\d+(?:\.\d+)?', result)]
+        assert numbers and all(x == x for x in numbers), (gesture, result)
