@@ -227,9 +227,8 @@ def frame(cloth):
             cloth.anchors_stale = False
         cloth.stretch = 1.0
         if cloth.n_held > 0:
-            cloth.stretch = min(MAX_STRETCH, over_reach(cloth.pos, cloth.held, cloth.n_verts,
-                                                        cloth.fixed, cloth.n_fixed, cloth.cols,
-                                                        cloth.spacing))
+            cloth.stretch = min(MAX_STRETCH, over_reach(cloth.pos, cloth.held, cloth.fixed,
+                                                        cloth.n_fixed, cloth.cols, cloth.spacing))
     for s in range(cloth.substeps):
         step(cloth)
     if cloth.use_sleep:

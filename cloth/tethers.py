@@ -72,7 +72,7 @@ def list_fixed(inv_mass, n, fixed):
     return count
 
 
-def over_reach(pos, held, n, fixed, n_fixed, cols, spacing):
+def over_reach(pos, held, fixed, n_fixed, cols, spacing):
     """How far the hands have pulled the cloth beyond its reach: the largest ratio, at least
     1, of a held vertex's distance from another fixed vertex to the two's rest distance.
 
@@ -83,7 +83,8 @@ def over_reach(pos, held, n, fixed, n_fixed, cols, spacing):
     seed's method); scaled, the edges share it out as an untethered cloth would."""
     worst = 1.0
     h2 = spacing * spacing
-    for k in range(n):
+    for j in range(n_fixed):            # a held vertex is fixed: it is in the list
+        k = fixed[j]
         if held[k] == 0:
             continue
         row = k // cols
