@@ -24,7 +24,7 @@ OPS = ['grab', 'move', 'release', 'pin', 'unpin']
 
 SCENE_KEYS = ['cols', 'rows', 'spacing', 'pins', 'gravity', 'dt', 'substeps', 'iterations',
               'damping', 'solver', 'actions', 'tethers', 'shear', 'compliance', 'tolerance',
-              'max_speed', 'sleep', 'name']
+              'max_speed', 'sleep', 'cells', 'lines', 'name']
 ACTION_KEYS = ['frame', 'op', 'vertex', 'to']
 
 
@@ -43,8 +43,9 @@ def fail(message):
 def solver_defaults(solver):
     if solver == 'jakobsen':
         return {'substeps': 1, 'iterations': 20, 'tethers': False, 'tolerance': 0.0,
-                'sleep': False}
-    return {'substeps': 8, 'iterations': 2, 'tethers': True, 'tolerance': 1e-4, 'sleep': True}
+                'sleep': False, 'cells': False, 'lines': False}
+    return {'substeps': 8, 'iterations': 1, 'tethers': True, 'tolerance': 1e-4, 'sleep': True,
+            'cells': True, 'lines': True}
 
 
 class Scene:
@@ -68,6 +69,8 @@ class Scene:
         self.compliance = 0.0
         self.tolerance = 0.0
         self.sleep = False
+        self.cells = False
+        self.lines = False
         self.actions = []      # list of Action, sorted by frame (stable)
 
 
@@ -155,6 +158,8 @@ def scene_from_object(obj):
     s.tethers = defaults['tethers']
     s.tolerance = defaults['tolerance']
     s.sleep = defaults['sleep']
+    s.cells = defaults['cells']
+    s.lines = defaults['lines']
 
     if has_key(obj, 'pins'):
         pins = obj['pins']
@@ -189,6 +194,10 @@ def scene_from_object(obj):
         s.shear = boolean(obj['shear'], 'shear')
     if has_key(obj, 'sleep'):
         s.sleep = boolean(obj['sleep'], 'sleep')
+    if has_key(obj, 'cells'):
+        s.cells = boolean(obj['cells'], 'cells')
+    if has_key(obj, 'lines'):
+        s.lines = boolean(obj['lines'], 'lines')
     if has_key(obj, 'compliance'):
         s.compliance = number(obj['compliance'], 'compliance', 0.0, 1e3, False,
                               'from 0 to 1000 m/N')

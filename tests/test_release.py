@@ -79,15 +79,21 @@ def flick(speed, **extra):
 
 
 @pytest.mark.parametrize('speed', [1.0, 3.0, 10.0])
-def test_a_flick_still_throws_the_cloth(speed):
+def test_a_flick_still_throws_the_cloth(speed, monkeypatch):
+    # A free grid of structural edges is a mechanism: it follows a hand partly by shearing, so
+    # it may fly slower than the hand or, whipped, faster (measured 0.46 to 1.54 times its
+    # speed). What letting go must not do is take momentum out of the throw.
     thrown = flick(speed)
-    assert 0.6 * speed < thrown < 1.5 * speed, (speed, thrown)
+    assert 0.3 * speed < thrown < 2.0 * speed, (speed, thrown)
+    monkeypatch.setattr(sim, 'RELIEVE_PASSES', 0)
+    assert flick(speed) == pytest.approx(thrown, rel=0.02)
 
 
 def test_relieve_runs_only_when_a_vertex_is_let_go_and_never_for_compliant_edges(
         monkeypatch):
     calls = []
     monkeypatch.setattr(sim, 'relieve', lambda *args: calls.append(args[-1]) or 0)
+    monkeypatch.setattr(sim, 'relieve_cells', lambda *args: 0)
     cloth = hanging()
     k = N * N - 1
     assert calls == []                    # 120 frames, nothing changed: never
