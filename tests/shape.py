@@ -1,0 +1,129 @@
+"""Exact references for the shape of a settled cloth, and disturbances to recover from: data
+and formulas shared by the CPython tests, the browser tests and the benchmark's checks.
+
+Shape, not only strain: strain says the edges have their rest length, not that the cloth hangs
+where the physics puts it. The references here are exact equilibria of the seed's model (unit
+masses, inextensible structural edges, gravity -y):
+- a curtain (the whole top row pinned) hangs as the rest grid;
+- a grid hung from its two top corners `span` apart: every cell is a rhombus, so vertex
+  (r, c) = U_c + V_r (U_c the sum of the first c edges of the top row, V_r of a column), and
+  the potential energy rows * sum(U_c.y) + cols * sum(V_r.y) is least with straight columns
+  (V_r = (0, -r h)) under the top row's discrete catenary, a chain of `cols` nodes that each
+  carry one column: link k at angle theta_k, tan(theta_k) = c ((cols - 2) / 2 - k), with c
+  from a 1-D root find on the span.
+"""
+import json
+import math
+
+
+def slack_hang(cols, rows, spacing, span):
+    """[(x, y)] of the exact two-corner hang, corners at (0, 0) and (span, 0)."""
+    links = cols - 1
+
+    def width(c):
+        return sum(spacing * math.cos(math.atan(c * ((cols - 2) / 2 - k))) for k in range(links))
+
+    lo, hi = 0.0, 1.0
+    while width(hi) > span:
+        hi *= 2
+    for _ in range(200):
+        mid = (lo + hi) / 2
+        if width(mid) > span:
+            lo = mid
+        else:
+            hi = mid
+    c = (lo + hi) / 2
+    top = [(0.0, 0.0)]
+    for k in range(links):
+        t = math.atan(c * ((cols - 2) / 2 - k))
+        x, y = top[-1]
+        top.append((x + spacing * math.cos(t), y - spacing * math.sin(t)))
+    return [(top[col][0], top[col][1] - row * spacing) for row in range(rows) for col in range(cols)]
+
+
+def rest_grid(cols, rows, spacing):
+    return [(c * spacing, -r * spacing) for r in range(rows) for c in range(cols)]
+
+
+def shape_error(positions, reference, width):
+    """(RMS, max) distance between matching vertices, in units of `width`."""
+    d2 = [(p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2 for p, q in zip(positions, reference)]
+    return math.sqrt(sum(d2) / len(d2)) / width, math.sqrt(max(d2)) / width
+
+
+def slack_scene(n, span=0.8, move_frames=300, **keys):
+    """An n x n cloth 1 m wide whose right corner is carried in to `span` over `move_frames`
+    frames (slowly, so it sags rather than folds), then pinned there and let go."""
+    h = 1.0 / (n - 1)
+    actions = [{'frame': 0, 'op': 'grab', 'vertex': n - 1}]
+    for f in range(1, move_frames + 1):
+        actions.append({'frame': f, 'op': 'move', 'vertex': n - 1,
+                        'to': [1.0 + (span - 1.0) * f / move_frames, 0.0]})
+    actions += [{'frame': move_frames, 'op': 'pin', 'vertex': n - 1},
+                {'frame': move_frames, 'op': 'release', 'vertex': n - 1}]
+    scene = dict(cols=n, rows=n, spacing=h, pins=[0, n - 1], damping=1.0, sleep=False,
+                 actions=actions)
+    scene.update(keys)
+    return scene
+
+
+# Disturbances of a 10 x 8 cloth, 1 m wide, hung from its top corners (damping 1/s, as the
+# presets): a vertex is grabbed after the cloth has hung for HANG frames, carried by (dx, dy)
+# over `frames` frames in a straight line (1 frame: thrown), and let go. Afterwards the cloth
+# must come back to its undisturbed hang.
+COLS, ROWS = 10, 8
+HANG = 120
+SETTLE = 600
+BOTTOM_LEFT = (ROWS - 1) * COLS
+BOTTOM_MIDDLE = (ROWS - 1) * COLS + 4
+BOTTOM_RIGHT = ROWS * COLS - 1
+DISTURBANCES = {
+    # name: (vertex, dx, dy, frames)
+    'flick-up-1.4m': (BOTTOM_MIDDLE, 0.3, 1.35, 1),
+    'flick-sideways-1.4m': (BOTTOM_LEFT, 1.4, 0.2, 1),
+    'throw-over-the-pins': (BOTTOM_MIDDLE, 0.2, 1.6, 20),
+    'corner-over-the-cloth': (BOTTOM_RIGHT, -1.2, 1.2, 5),
+    'pull-far-down': (BOTTOM_MIDDLE, 0.0, -1.5, 30),
+}
+
+
+def hang_scene(**keys):
+    scene = dict(cols=COLS, rows=ROWS, spacing=1.0 / (COLS - 1), pins=[0, COLS - 1],
+                 damping=1.0, sleep=False)
+    scene.update(keys)
+    return scene
+
+
+def gesture_actions(vertex, path, start=HANG):
+    """grab at frame `start`, then one move per point of `path` ([(x, y)] relative to where the
+    vertex hangs, which the caller gives as the first point's base), then release."""
+    actions = [{'frame': start, 'op': 'grab', 'vertex': vertex}]
+    for i, (x, y) in enumerate(path):
+        actions.append({'frame': start + 1 + i, 'op': 'move', 'vertex': vertex, 'to': [x, y]})
+    actions.append({'frame': start + 1 + len(path), 'op': 'release', 'vertex': vertex})
+    return actions
+
+
+def straight_path(x0, y0, dx, dy, frames):
+    return [(x0 + dx * f / frames, y0 + dy * f / frames) for f in range(1, frames + 1)]
+
+
+def zigzag_path(x0, y0, amplitude, period, cycles):
+    out = []
+    for f in range(1, period * cycles + 1):
+        phase = (f % period) / period
+        tri = 4 * phase - 1 if phase < 0.5 else 3 - 4 * phase
+        out.append((x0 + amplitude * tri, y0 + 0.3 * amplitude * math.sin(6 * math.pi * f / period)))
+    return out
+
+
+def recovery(positions, undisturbed, pins):
+    """(RMS error in widths, max error, how many vertices are above the highest pin)."""
+    rms, worst = shape_error(positions, undisturbed, (COLS - 1) / (COLS - 1))
+    top = max(positions[p][1] for p in pins)
+    above = sum(1 for p in positions if p[1] > top + 1e-9)
+    return rms, worst, above
+
+
+def to_text(scene):
+    return json.dumps(scene)
