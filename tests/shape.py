@@ -1,5 +1,5 @@
-"""Exact references for the shape of a settled cloth, and disturbances to recover from: data
-and formulas shared by the CPython tests, the browser tests and the benchmark's checks.
+"""Exact references for the shape of a settled cloth (cloth/reference.py, which the benchmark
+uses too), and disturbances to recover from, shared by the CPython and the browser tests.
 
 Shape, not only strain: strain says the edges have their rest length, not that the cloth hangs
 where the physics puts it. The references here are exact equilibria of the seed's model (unit
@@ -15,34 +15,7 @@ masses, inextensible structural edges, gravity -y):
 import json
 import math
 
-
-def slack_hang(cols, rows, spacing, span):
-    """[(x, y)] of the exact two-corner hang, corners at (0, 0) and (span, 0)."""
-    links = cols - 1
-
-    def width(c):
-        return sum(spacing * math.cos(math.atan(c * ((cols - 2) / 2 - k))) for k in range(links))
-
-    lo, hi = 0.0, 1.0
-    while width(hi) > span:
-        hi *= 2
-    for _ in range(200):
-        mid = (lo + hi) / 2
-        if width(mid) > span:
-            lo = mid
-        else:
-            hi = mid
-    c = (lo + hi) / 2
-    top = [(0.0, 0.0)]
-    for k in range(links):
-        t = math.atan(c * ((cols - 2) / 2 - k))
-        x, y = top[-1]
-        top.append((x + spacing * math.cos(t), y - spacing * math.sin(t)))
-    return [(top[col][0], top[col][1] - row * spacing) for row in range(rows) for col in range(cols)]
-
-
-def rest_grid(cols, rows, spacing):
-    return [(c * spacing, -r * spacing) for r in range(rows) for c in range(cols)]
+from cloth.reference import slack_hang, rest_grid  # noqa: F401 (used by the tests)
 
 
 def shape_error(positions, reference, width):

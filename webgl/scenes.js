@@ -21,13 +21,16 @@ window.clothScenes = (function () {
   // solver_defaults): picking a solver in the UI starts from these.
   const SOLVERS = {
     jakobsen: { label: 'Jakobsen (seed)', substeps: 1, iterations: 20 },
-    xpbd: { label: 'XPBD + tethers', substeps: 8, iterations: 2 },
+    xpbd: { label: 'XPBD + tethers, cells, lines', substeps: 8, iterations: 1 },
   };
   // The presets start with the core's default solver (XPBD + tethers, the best
   // configuration on the benchmark): nearly inextensible, so strain colours are
   // faint on a hanging cloth (auto scale still shows where the strain is).
   // The Solver menu switches to the seed's method, which drapes and stretches.
-  const DEFAULT_PARAMS = { solver: 'xpbd', substeps: 8, iterations: 2, gravity: -9.81 };
+  const DEFAULT_PARAMS = { solver: 'xpbd', substeps: 8, iterations: 1, gravity: -9.81 };
+  // Air: a released cloth comes to rest within a few seconds, as fabric does (velocity
+  // loses 1/s of itself per second); the core's default, 0, swings for minutes.
+  const AIR_DAMPING = 1.0;
 
   function topRow(cols, every) {
     const pins = [];
@@ -98,6 +101,7 @@ window.clothScenes = (function () {
       substeps: p.substeps,
       iterations: p.iterations,
       solver: p.solver,
+      damping: AIR_DAMPING,
     };
     const w = (p.cols - 1) * spacing, h = (p.rows - 1) * spacing;
     const view = preset.view ? preset.view(w, h) : viewFor(scene, preset.sag);
