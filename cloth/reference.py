@@ -12,13 +12,13 @@ transpiled).
 import math
 
 
-def slack_hang(cols, rows, spacing, span):
-    """[(x, y)] of the exact two-corner hang, the corners at (0, 0) and (span, 0)."""
-    links = cols - 1
-
+def discrete_chain(n_links, link, span):
+    """Exact equilibrium of n equal rigid links with equal weights at the inner joints, hung
+    between two points `span` apart at equal height: [(x, y)] of the n + 1 joints from (0, 0),
+    link k (1..n) at angle theta_k below the horizontal, tan(theta_k) = c ((n+1)/2 - k)."""
     def width(c):
-        return sum(spacing * math.cos(math.atan(c * ((cols - 2) / 2 - k))) for k in range(links))
-
+        return sum(link * math.cos(math.atan(c * ((n_links + 1) / 2 - k)))
+                   for k in range(1, n_links + 1))
     lo, hi = 0.0, 1.0
     while width(hi) > span:
         hi *= 2
@@ -29,11 +29,19 @@ def slack_hang(cols, rows, spacing, span):
         else:
             hi = mid
     c = (lo + hi) / 2
-    top = [(0.0, 0.0)]
-    for k in range(links):
-        t = math.atan(c * ((cols - 2) / 2 - k))
-        x, y = top[-1]
-        top.append((x + spacing * math.cos(t), y - spacing * math.sin(t)))
+    pts = [(0.0, 0.0)]
+    for k in range(1, n_links + 1):
+        t = math.atan(c * ((n_links + 1) / 2 - k))
+        x, y = pts[-1]
+        pts.append((x + link * math.cos(t), y - link * math.sin(t)))
+    return pts
+
+
+def slack_hang(cols, rows, spacing, span):
+    """[(x, y)] of the exact two-corner hang, the corners at (0, 0) and (span, 0): the top row
+    is the discrete chain of cols - 1 links (each inner node carries one column, the same
+    weight for all), and every row is the top row moved down by r h."""
+    top = discrete_chain(cols - 1, spacing, span)
     return [(top[col][0], top[col][1] - row * spacing) for row in range(rows) for col in range(cols)]
 
 

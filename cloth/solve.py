@@ -427,23 +427,22 @@ def relieve_cells(pos, prev, inv_mass, cols, rows, slack):
             moved += 1
             sx = ex / w
             sy = ey / w
-            pos[ia] -= wa * sx
-            pos[ia + 1] -= wa * sy
-            pos[ie] -= we * sx
-            pos[ie + 1] -= we * sy
-            pos[ib] += wb * sx
-            pos[ib + 1] += wb * sy
-            pos[idd] += wd * sx
-            pos[idd + 1] += wd * sy
-            prev[ia] -= wa * sx
-            prev[ia + 1] -= wa * sy
-            prev[ie] -= we * sx
-            prev[ie + 1] -= we * sy
-            prev[ib] += wb * sx
-            prev[ib + 1] += wb * sy
-            prev[idd] += wd * sx
-            prev[idd + 1] += wd * sy
+            shift_cell(pos, ia, ib, ie, idd, wa, wb, we, wd, sx, sy)
+            shift_cell(prev, ia, ib, ie, idd, wa, wb, we, wd, sx, sy)
     return moved
+
+
+def shift_cell(xy, ia, ib, ie, idd, wa, wb, we, wd, sx, sy):
+    """Move a cell's corners by their shares of the defect (sx, sy): A and C against it, B and
+    D with it (relieve_cells; project_cells has the same lines inline, being per step)."""
+    xy[ia] -= wa * sx
+    xy[ia + 1] -= wa * sy
+    xy[ie] -= we * sx
+    xy[ie + 1] -= we * sy
+    xy[ib] += wb * sx
+    xy[ib + 1] += wb * sy
+    xy[idd] += wd * sx
+    xy[idd + 1] += wd * sy
 
 
 def max_motion2(pos, prev, inv_mass, n):

@@ -4,6 +4,7 @@ import math
 
 import pytest
 
+from cloth.reference import discrete_chain
 from helpers import scene, curtain, load, step, xy, elliptic_k, all_finite
 
 SOLVERS = ['jakobsen', 'xpbd']
@@ -96,30 +97,6 @@ def test_pendulum_never_gains_energy(solver):
     if solver == 'jakobsen':
         for before, after in zip(heights, heights[1:]):
             assert after <= before + 1e-9
-
-
-def discrete_chain(n_links, link, span):
-    """Exact equilibrium of n equal rigid links with unit masses at the inner joints, hung
-    between two points `span` apart at equal height: tan(theta_k) = c ((n+1)/2 - k)."""
-    def width(c):
-        return sum(link * math.cos(math.atan(c * ((n_links + 1) / 2 - k)))
-                   for k in range(1, n_links + 1))
-    lo, hi = 0.0, 1.0
-    while width(hi) > span:
-        hi *= 2
-    for _ in range(200):
-        mid = (lo + hi) / 2
-        if width(mid) > span:
-            lo = mid
-        else:
-            hi = mid
-    c = (lo + hi) / 2
-    pts = [(0.0, 0.0)]
-    for k in range(1, n_links + 1):
-        t = math.atan(c * ((n_links + 1) / 2 - k))
-        x, y = pts[-1]
-        pts.append((x + link * math.cos(t), y - link * math.sin(t)))
-    return pts
 
 
 @pytest.mark.parametrize('solver', SOLVERS)
