@@ -47,14 +47,22 @@ def positions_of(cloth):
     return [[pos[k + k], pos[k + k + 1]] for k in range(cloth.n_verts)]
 
 
+def apply_due(cloth, next_action, f):
+    """Apply the scene's actions from index `next_action` on whose frame is <= f (they come
+    sorted by frame); return the index of the first one not yet due. The CLI and the page step
+    scripted scenes through this one function."""
+    actions = cloth.scene.actions
+    while next_action < len(actions) and actions[next_action].frame <= f:
+        apply_action(cloth, actions[next_action])
+        next_action += 1
+    return next_action
+
+
 def simulate(cloth, frames, trace):
     """Step `frames` frames, applying each action before the frame after its `frame`."""
-    actions = cloth.scene.actions
     next_action = 0
     for f in range(frames):
-        while next_action < len(actions) and actions[next_action].frame <= f:
-            apply_action(cloth, actions[next_action])
-            next_action += 1
+        next_action = apply_due(cloth, next_action, f)
         frame(cloth)
         if trace is not None:
             trace.append(positions_of(cloth))

@@ -44,12 +44,11 @@ SLEEP_DRIFT = 1e-3
 SLEEP_TIME = 1.0
 
 # Each step removes this fraction of every cell's departure from a parallelogram
-# (solve.project_cells); and a line whose links are more than LINE_FAR off their rest length
-# is left to the sweeps (solve.solve_lines), as are all lines when a step's fall under
-# gravity exceeds LINE_STEP of the spacing (see Cloth.use_lines).
+# (solve.project_cells); and the line solves are left out when a step's fall under gravity
+# exceeds LINE_STEP of the spacing (see Cloth.use_lines).
 CELL_STRENGTH = 0.25
-LINE_FAR = 0.3
 LINE_STEP = 0.01
+LINE_NEWTON = 2
 
 
 class Cloth:
@@ -339,12 +338,12 @@ def lines(cloth):
     rows = cloth.rows
     h = cloth.spacing
     if rows > 1:
-        solve_lines(cloth.pos, cloth.inv_mass, 0, cols, rows, h, cols, 1, LINE_FAR,
-                    cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd)
+        solve_lines(cloth.pos, cloth.inv_mass, 0, cols, rows, h, cols, 1, cloth.tolerance,
+                    LINE_NEWTON, cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd)
         cloth.projections += cols * (rows - 1)
     if cols > 1:
-        solve_lines(cloth.pos, cloth.inv_mass, 0, 1, cols, h, rows, cols, LINE_FAR,
-                    cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd)
+        solve_lines(cloth.pos, cloth.inv_mass, 0, 1, cols, h, rows, cols, cloth.tolerance,
+                    LINE_NEWTON, cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd)
         cloth.projections += rows * (cols - 1)
 
 

@@ -209,88 +209,109 @@ def project_cells(pos, inv_mass, cols, rows, strength):
             pos[idd + 1] += wd * sy
 
 
-def solve_lines(pos, inv_mass, first, stride, nodes, rest, lines, line_step, far, nx, ny, cc, cd):
+def solve_lines(pos, inv_mass, first, stride, nodes, rest, lines, line_step, tolerance, newton,
+                nx, ny, cc, cd):
     """Solve every edge of a grid line at once: for each of `lines` lines (node i of line l is
     first + l * line_step + i * stride, `nodes` nodes, every link `rest` long), the linearised
     constraints len_i - rest = 0 of the line's links form a tridiagonal system in the
     multipliers,
         (w_i + w_i+1) dl_i - w_i (n_i-1 . n_i) dl_i-1 - w_i+1 (n_i . n_i+1) dl_i+1 = len_i - rest,
     solved exactly by the Thomas algorithm (diagonally dominant, so stable), after which node i
-    moves by w_i (n_i dl_i - n_i-1 dl_i-1). nx, ny, cc, cd are work arrays of `nodes` doubles.
-    A line with a link more than `far` (a fraction of rest) off is left to the sweeps: that far
-    from rest the linearisation overshoots (measured: with steps of 1/32 s a taut cloth never
-    came to rest).
+    moves by w_i (n_i dl_i - n_i-1 dl_i-1). That is one Newton step. A line none of whose links
+    is off by more than `tolerance` (a fraction of rest) is left alone; one whose worst link is
+    off by more than sqrt(tolerance) is solved again, up to `newton` steps in all. nx, ny, cc, cd are work arrays of `nodes` doubles.
+    Two passes per Newton step: one computes the links' directions and errors and eliminates
+    forward (the super-diagonal of link i is the sub-diagonal of link i + 1, known one link
+    later); the other substitutes back from the last link, moving each link's ends as it goes.
 
     Why: a row or column carrying a load (the top row of a cloth hung from two corners holds
     the whole cloth) is a chain, and Gauss-Seidel moves a correction one link per sweep, so a
     chain of N links needs O(N^2) sweeps; its stretch made the slack hang sag centimetres too
-    low at 60x60. One line solve removes a line's stretch whatever its length."""
+    low at 60x60. One line solve removes a line's stretch whatever its length. More than one
+    Newton step, because the column solves that come first pull a loaded top row far from its
+    length (measured at 120x120: links 20-90% long), where one step leaves much of it."""
     sqrt = math.sqrt
     links = nodes - 1
-    far = far * rest
+    tol = tolerance * rest
+    # Newton converges quadratically: from a largest error e one step leaves about e^2 / rest,
+    # which is within the tolerance once e is within sqrt(tolerance).
+    once = sqrt(tolerance) * rest
     for l in range(lines):
         start = first + l * line_step
-        skip = False
-        for i in range(links):
-            a = start + i * stride
-            ia = a + a
-            ib = ia + stride + stride
-            dx = pos[ib] - pos[ia]
-            dy = pos[ib + 1] - pos[ia + 1]
-            length = sqrt(dx * dx + dy * dy)
-            if length < 1e-15:
-                nx[i] = 0.0
-                ny[i] = 0.0
-                cd[i] = 0.0
-            else:
-                nx[i] = dx / length
-                ny[i] = dy / length
-                cd[i] = length - rest
-                if cd[i] > far or cd[i] < -far:
-                    skip = True
-        if skip:
-            continue
-        # Forward elimination; a link between two fixed nodes has nothing to move (dl = 0).
-        for i in range(links):
-            a = start + i * stride
+        for it in range(newton):
+            a = start
             wa = inv_mass[a]
-            wb = inv_mass[a + stride]
-            diag = wa + wb
-            rhs = cd[i]
-            if i > 0:
-                sub = -wa * (nx[i - 1] * nx[i] + ny[i - 1] * ny[i])
-                diag -= sub * cc[i - 1]
-                rhs -= sub * cd[i - 1]
-            if diag <= 1e-12:
-                cc[i] = 0.0
-                cd[i] = 0.0
-            else:
-                sup = 0.0
-                if i + 1 < links:
-                    sup = -wb * (nx[i] * nx[i + 1] + ny[i] * ny[i + 1])
-                cc[i] = sup / diag
-                cd[i] = rhs / diag
-        i = links - 2
-        while i >= 0:
-            cd[i] -= cc[i] * cd[i + 1]
-            i -= 1
-        for i in range(links):
-            a = start + i * stride
-            b = a + stride
-            dl = cd[i]
-            sa = inv_mass[a] * dl
-            sb = inv_mass[b] * dl
-            pos[a + a] += nx[i] * sa
-            pos[a + a + 1] += ny[i] * sa
-            pos[b + b] -= nx[i] * sb
-            pos[b + b + 1] -= ny[i] * sb
+            worst = 0.0
+            for i in range(links):
+                b = a + stride
+                wb = inv_mass[b]
+                ia = a + a
+                ib = b + b
+                dx = pos[ib] - pos[ia]
+                dy = pos[ib + 1] - pos[ia + 1]
+                length = sqrt(dx * dx + dy * dy)
+                ux = 0.0
+                uy = 0.0
+                rhs = 0.0
+                if length >= 1e-15:
+                    ux = dx / length
+                    uy = dy / length
+                    rhs = length - rest
+                den = wa + wb
+                if den > 0.0:
+                    if rhs > worst:
+                        worst = rhs
+                    elif -rhs > worst:
+                        worst = -rhs
+                nx[i] = ux
+                ny[i] = uy
+                if i > 0:
+                    # cc[i - 1] holds 1 / den of the previous link until its super-diagonal,
+                    # this link's sub-diagonal, is known.
+                    sub = -wa * (nx[i - 1] * ux + ny[i - 1] * uy)
+                    cc[i - 1] = sub * cc[i - 1]
+                    den -= sub * cc[i - 1]
+                    rhs -= sub * cd[i - 1]
+                if den <= 1e-12:
+                    # A link between two fixed nodes: nothing to move (dl = 0).
+                    cc[i] = 0.0
+                    cd[i] = 0.0
+                else:
+                    cc[i] = 1.0 / den
+                    cd[i] = rhs / den
+                a = b
+                wa = wb
+            if worst <= tol:
+                break
+            later = 0.0
+            i = links - 1
+            b = start + links * stride
+            while i >= 0:
+                a = b - stride
+                dl = cd[i]
+                if i < links - 1:
+                    dl -= cc[i] * later
+                later = dl
+                sa = inv_mass[a] * dl
+                sb = inv_mass[b] * dl
+                ia = a + a
+                ib = b + b
+                pos[ia] += nx[i] * sa
+                pos[ia + 1] += ny[i] * sa
+                pos[ib] -= nx[i] * sb
+                pos[ib + 1] -= ny[i] * sb
+                b = a
+                i -= 1
+            if worst <= once:
+                break
 
 
 def project_tethers(pos, prev, inv_mass, anchor, tether, n, stretch):
     """Long-range attachments (Kim, Chentanez, Mueller 2012), one-sided: a free vertex may be no
-    farther from its anchor (the nearest fixed vertex along the cloth) than the rest distance
-    between them. One projection per vertex removes the low-frequency stretch that Gauss-Seidel
-    sweeps take O(N^2) passes to remove. Like sweep_xpbd, the vertex moves along the
+    farther from its anchor (the nearest fixed vertex along the cloth) than the length of the
+    shortest path between them over the edges (tethers.find_anchors). One projection per
+    vertex removes the low-frequency stretch that Gauss-Seidel sweeps take O(N^2) passes to
+    remove. Like sweep_xpbd, the vertex moves along the
     anchor-to-vertex direction at the start of the step (one Newton step on |d|^2 = limit^2, no
     sqrt), so that a tether that is also an edge (a pendulum) keeps its energy; far from the
     limit or after a sharp turn it is projected along d onto the exact distance instead.

@@ -91,11 +91,21 @@ def zigzag_path(x0, y0, amplitude, period, cycles):
 
 
 def recovery(positions, undisturbed, pins):
-    """(RMS error in widths, max error, how many vertices are above the highest pin)."""
-    rms, worst = shape_error(positions, undisturbed, (COLS - 1) / (COLS - 1))
+    """(RMS error in widths, max error, how many vertices are above the highest pin by more
+    than ABOVE of the width)."""
+    width = (COLS - 1) / (COLS - 1)
+    rms, worst = shape_error(positions, undisturbed, width)
     top = max(positions[p][1] for p in pins)
-    above = sum(1 for p in positions if p[1] > top + 1e-9)
+    above = sum(1 for p in positions if p[1] > top + ABOVE * width)
     return rms, worst, above
+
+
+# These scenes hang their top row taut (the pins a rest width apart). A straight chain of
+# length L between points L apart can bow by up to sqrt(3 tol / 8) L without any link
+# exceeding the solver's tolerance tol (1e-4: 0.6% of L), and after a disturbance the top row
+# may rest bowed up by that much (measured: 1-3 mm on the 1 m cloth); a row folded back over
+# the pins stands about 10% of the width above them.
+ABOVE = 0.01
 
 
 def to_text(scene):

@@ -22,7 +22,7 @@
     cloth: null, m: null, sceneText: '', sceneObj: null, view: null,
     preset: 'curtain', params: null,
     mode: 'strain', scaleMode: 'auto', fullScale: 0.05,
-    paused: false, acc: 0, last: -1, frames: 0, renders: 0, dirty: true, needMeasure: true,
+    paused: false, acc: 0, last: -1, frames: 0, nextAction: 0, renders: 0, dirty: true, needMeasure: true,
     simMs: NaN, renderMs: NaN, fps: NaN, lastReadout: 0, scale: 0,
   };
 
@@ -63,6 +63,7 @@
     const g = Array.isArray(obj.gravity) ? obj.gravity[1] : undefined;
     return { cols: cloth.cols, rows: cloth.rows, iterations: pick('iterations'),
              substeps: pick('substeps'), gravity: g !== undefined ? g : -9.81,
+             damping: cloth.scene.damping,
              solver: obj.solver || (cloth.use_xpbd ? 'xpbd' : 'jakobsen') };
   }
 
@@ -89,6 +90,7 @@
     s.view = view || scenes.viewFor(obj);
     s.params = paramsFrom(obj, cloth);
     s.frames = 0;
+    s.nextAction = 0;
     s.acc = 0;
     if (renderer.ok) {
       renderer.setScene(cloth);
@@ -148,6 +150,7 @@
         const obj = Object.assign({}, s.sceneObj);
         obj.cols = p.cols; obj.rows = p.rows; obj.iterations = p.iterations; obj.substeps = p.substeps;
         obj.solver = p.solver;
+        obj.damping = p.damping;
         obj.gravity = [Array.isArray(obj.gravity) ? obj.gravity[0] : 0, p.gravity];
         if (Array.isArray(obj.pins)) {
           obj.pins = obj.pins.filter(function (k) { return k < p.cols * p.rows; });
@@ -193,7 +196,8 @@
 
   function simulate(n) {
     const m = s.m;
-    if (s.cloth.asleep) {
+    const scripted = s.cloth.scene.actions.length;
+    if (s.cloth.asleep && s.nextAction >= scripted) {
       // At rest (the core stopped stepping it): nothing to step, measure or draw until an
       // operation wakes it.
       s.frames += n;
@@ -201,7 +205,11 @@
       return;
     }
     const t0 = performance.now();
-    for (let i = 0; i < n; i++) m.frame();
+    // A scene's scripted actions play at their frames, as in the CLI (core.applyDue).
+    for (let i = 0; i < n; i++) {
+      if (s.nextAction < scripted) s.nextAction = core.applyDue(s.cloth, s.nextAction, s.frames + i);
+      m.frame();
+    }
     m.measure();
     // The core's max_speed safety net engaged: the settings are unstable (one sweep per
     // step on an undamped grid). Say so rather than let it pass silently.

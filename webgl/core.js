@@ -27,6 +27,9 @@ window.clothCore = (function (api, modules) {
   }
 
   const core = {
+    // applyDue(cloth, next, frame) -> next: the scene's scripted actions due before `frame`
+    // (cloth/api.py apply_due, the CLI's own loop).
+    applyDue: function (cloth, next, f) { return api.apply_due(cloth, next, f); },
     // run(sceneJsonText, frames) -> JSON text, as the CLI prints it.
     run: wrap(function (text, frames) { return api.run(text, frames); }),
     // load(sceneJsonText) -> a live Cloth (typed arrays, frame(), measure(), grab()...).

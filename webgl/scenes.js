@@ -14,6 +14,7 @@ window.clothScenes = (function () {
     iterations: { min: 0, max: 200, int: true, label: 'Iterations' },
     substeps: { min: 1, max: 16, int: true, label: 'Substeps' },
     gravity: { min: -100, max: 100, int: false, label: 'Gravity' },
+    damping: { min: 0, max: 100, int: false, label: 'Damping' },
     fullScale: { min: 0.0001, max: 1, int: false, label: 'Full-scale strain' },
   };
 
@@ -27,10 +28,9 @@ window.clothScenes = (function () {
   // configuration on the benchmark): nearly inextensible, so strain colours are
   // faint on a hanging cloth (auto scale still shows where the strain is).
   // The Solver menu switches to the seed's method, which drapes and stretches.
-  const DEFAULT_PARAMS = { solver: 'xpbd', substeps: 8, iterations: 1, gravity: -9.81 };
-  // Air: a released cloth comes to rest within a few seconds, as fabric does (velocity
-  // loses 1/s of itself per second); the core's default, 0, swings for minutes.
-  const AIR_DAMPING = 1.0;
+  // damping, air: a released cloth comes to rest within a few seconds, as fabric does
+  // (its velocity loses 1/s of itself per second); the core's default, 0, swings for minutes.
+  const DEFAULT_PARAMS = { solver: 'xpbd', substeps: 8, iterations: 1, gravity: -9.81, damping: 1 };
 
   function topRow(cols, every) {
     const pins = [];
@@ -62,7 +62,15 @@ window.clothScenes = (function () {
       params: { cols: 30, rows: 30 },
       size: 1.6,
       pins: function (cols) { return cols > 1 ? [0, cols - 1] : [0]; },
-      sag: 0.45,
+      // Slack: at frame 0 the right corner is carried in to 80% of the width and pinned
+      // there, so the cloth hangs with its top row sagging (the scene where shape shows).
+      actions: function (cols, rows, spacing) {
+        if (cols < 2) return [];
+        const k = cols - 1, x = 0.8 * (cols - 1) * spacing;
+        return [{ frame: 0, op: 'grab', vertex: k, to: [x, 0] },
+                { frame: 0, op: 'pin', vertex: k }, { frame: 0, op: 'release', vertex: k }];
+      },
+      sag: 0.6,
     },
     chain: {
       label: 'Chain',
@@ -101,8 +109,9 @@ window.clothScenes = (function () {
       substeps: p.substeps,
       iterations: p.iterations,
       solver: p.solver,
-      damping: AIR_DAMPING,
+      damping: p.damping,
     };
+    if (preset.actions) scene.actions = preset.actions(p.cols, p.rows, spacing);
     const w = (p.cols - 1) * spacing, h = (p.rows - 1) * spacing;
     const view = preset.view ? preset.view(w, h) : viewFor(scene, preset.sag);
     return { scene: scene, view: view };

@@ -35,7 +35,7 @@ window.clothUI = (function () {
       legendLo: $('legend-lo'), legendMid: $('legend-mid'), legendHi: $('legend-hi'),
       sim: $('r-sim'), render: $('r-render'), fps: $('r-fps'), rms: $('r-rms'), max: $('r-max'), size: $('r-size'),
     };
-    const params = ['cols', 'rows', 'iterations', 'substeps', 'gravity'];
+    const params = ['cols', 'rows', 'iterations', 'substeps', 'gravity', 'damping'];
     let noteTimer = 0;
 
     el.pause.addEventListener('click', function () { h.pause(); });

@@ -13,7 +13,8 @@ def set_input(pg, selector, value):
 
 
 CLAMPS = [('#cols', 999, 200), ('#rows', 0, 1), ('#iterations', -5, 0), ('#substeps', 1000, 16),
-          ('#gravity', -1e6, -100), ('#cols', 12.6, 13)]
+          ('#gravity', -1e6, -100), ('#cols', 12.6, 13), ('#damping', 500, 100),
+          ('#damping', -1, 0)]
 
 
 def test_out_of_range_input_is_clamped_with_a_note(open_page):
