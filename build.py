@@ -28,7 +28,7 @@ WEBGL = os.path.join(ROOT, 'webgl')
 DIST_HTML = os.path.join(ROOT, 'dist', 'index.html')
 
 # The hand-written page, in load order. Every webgl/*.js must be listed here.
-SCRIPTS = ['core.js', 'scenes.js', 'renderer.js', 'input.js', 'ui.js', 'app.js']
+SCRIPTS = ['core.js', 'options.js', 'scenes.js', 'renderer.js', 'input.js', 'ui.js', 'app.js']
 STYLES = ['style.css']
 TEMPLATE = 'index.html'
 

@@ -4,9 +4,13 @@ CPython only (never transpiled). Bad input exits with status 2 and one line nami
 """
 
 import argparse
+import os
+import shutil
 import sys
+import tempfile
 
-from cloth.api import run
+from cloth.api import run, start, simulate, result_of
+from cloth.host import to_json
 from cloth.scene import SceneError
 
 
@@ -27,21 +31,64 @@ def main(argv=None):
     args = parser.parse_args(argv)
     try:
         if args.scene == '-':
-            text = sys.stdin.read()
+            data = sys.stdin.buffer.read()
         else:
-            with open(args.scene, encoding='utf-8') as f:
-                text = f.read()
-    except (OSError, UnicodeDecodeError) as err:
+            with open(args.scene, 'rb') as f:
+                data = f.read()
+    except OSError as err:
         sys.stderr.write('error: scene: cannot read ' + args.scene + ': ' +
                          (err.strerror or str(err)) + '\n')
         return 2
+    # Bytes, decoded here: the same bytes from a file or from standard input give the same
+    # answer whatever the locale, and text that is not UTF-8 is bad input like any other.
     try:
-        out = run(text, args.frames, args.trace)
+        text = data.decode('utf-8-sig')  # a leading byte-order mark is not content
+    except UnicodeDecodeError as err:
+        sys.stderr.write('error: scene: not UTF-8 text (invalid byte at offset ' +
+                         str(err.start) + ')\n')
+        return 2
+    try:
+        if args.trace:
+            stream_trace(text, args.frames, sys.stdout)
+        else:
+            sys.stdout.write(run(text, args.frames) + '\n')
     except SceneError as err:
         sys.stderr.write('error: ' + str(err) + '\n')
         return 2
-    sys.stdout.write(out + '\n')
+    except BrokenPipeError:
+        # The reader went away (`| head`): not an error of ours, and no traceback. Python
+        # would report the failed flush at exit again, so stdout goes to devnull first.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
     return 0
+
+
+class TraceFile:
+    """What `simulate` appends a frame's positions to: the frame goes to a temporary file as
+    JSON text at once, so that memory holds one frame, never the whole trace."""
+
+    def __init__(self, f):
+        self.f = f
+        self.count = 0
+
+    def append(self, positions):
+        if self.count:
+            self.f.write(',')
+        self.f.write(to_json(positions))
+        self.count += 1
+
+
+def stream_trace(text, frames, out):
+    """The text `run(text, frames, True)` returns, character for character (the trace is
+    its last key), written to `out` with the trace streamed through a temporary file."""
+    cloth = start(text, frames, True)
+    with tempfile.TemporaryFile('w+', encoding='utf-8') as spool:
+        simulate(cloth, frames, TraceFile(spool))
+        head = to_json(result_of(cloth, frames))
+        out.write(head[:-1] + ',"trace":[')
+        spool.seek(0)
+        shutil.copyfileobj(spool, out, 1 << 20)
+        out.write(']}\n')
 
 
 if __name__ == '__main__':

@@ -6,15 +6,33 @@ returns, and the parity tests compare its CPython and browser results number for
 
 from cloth.host import to_json, kind_of, is_finite
 from cloth.scene import parse_scene, SceneError, fail, MAX_FRAMES
-from cloth.sim import Cloth, frame, measure, grab, move, release, pin, unpin
+from cloth.sim import Cloth, frame, measure, grab, move, release, pin, unpin, retune
 
-# A trace holds frames x vertices points; past this it would be gigabytes of JSON.
+# A trace holds frames x vertices points. The CLI streams it (cloth/__main__.py: memory
+# stays that of one frame); in memory, as `run` holds it, it would be gigabytes.
 MAX_TRACE_POINTS = 20000000
 
 
 def load(scene_json_text):
     """Scene JSON text -> a Cloth ready to step (SceneError if the scene is bad)."""
     return Cloth(parse_scene(scene_json_text))
+
+
+def check(scene_json_text):
+    """Scene JSON text -> a checked Scene, nothing built (SceneError if the scene is bad)."""
+    return parse_scene(scene_json_text)
+
+
+def build(scene):
+    """A checked Scene (parse_scene) -> a Cloth: the page checks its own limits between."""
+    return Cloth(scene)
+
+
+def set_scene(cloth, scene_json_text):
+    """New settings for the running cloth (gravity, dt, substeps, iterations, solver,
+    damping, ...): a whole scene on the same grid, checked as `load` checks one. Positions,
+    velocities, pins and held vertices stay (sim.retune); a bad scene changes nothing."""
+    retune(cloth, parse_scene(scene_json_text))
 
 
 def check_frames(frames):
@@ -70,21 +88,31 @@ def simulate(cloth, frames, trace):
 
 def run(scene_json_text, frames, with_trace=False):
     """Run a scene for `frames` frames; return the result as JSON text (see README)."""
+    cloth = start(scene_json_text, frames, with_trace)
+    trace = [] if with_trace else None
+    simulate(cloth, frames, trace)
+    result = result_of(cloth, frames)
+    if with_trace:
+        result['trace'] = trace
+    return to_json(result)
+
+
+def start(scene_json_text, frames, with_trace):
+    """The checks of a run, before any work: the scene, the frames, the trace's size."""
     cloth = load(scene_json_text)
     check_frames(frames)
     if with_trace and frames * cloth.n_verts > MAX_TRACE_POINTS:
         fail('frames: a trace of frames x vertices must be at most 20000000 points')
-    trace = [] if with_trace else None
-    simulate(cloth, frames, trace)
+    return cloth
+
+
+def result_of(cloth, frames):
     measure(cloth)
     m = cloth.n_edges
-    result = {
+    return {
         'frames': frames,
         'edges': [[cloth.edge_a[e], cloth.edge_b[e]] for e in range(m)],
         'positions': positions_of(cloth),
         'edge_diff': [cloth.diff[e] for e in range(m)],
         'node_stress': [cloth.stress[k] for k in range(cloth.n_verts)],
     }
-    if with_trace:
-        result['trace'] = trace
-    return to_json(result)

@@ -974,6 +974,12 @@ def gestures(progress):
     return '\n'.join(lines) + '\n'
 
 
+# The files a run writes: bench<suffix><ending>. A quick run's files are a smoke test, not
+# results: .gitignore keeps them out of commits (tests/test_bench.py checks that it does).
+OUTPUTS = ['.md', '.json', '.svg', '-strain.svg']
+QUICK_SUFFIX = '-quick'
+
+
 def bench(quick, progress):
     try:
         from playwright.sync_api import sync_playwright
@@ -1048,7 +1054,7 @@ def main(argv=None):
     result = {'meta': meta, 'speed_of_light': sol, 'groups': groups, 'rows': rows}
     result['targets'] = check_targets(rows, args.quick)
     md = markdown(result)
-    suffix = '-quick' if args.quick else ''
+    suffix = QUICK_SUFFIX if args.quick else ''
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, 'bench%s.md' % suffix), 'w', encoding='utf-8') as f:
         f.write(md)
@@ -1065,7 +1071,7 @@ def main(argv=None):
                                              PLOT_FLOOR)))
     sys.stdout.write(md)
     progress('wrote %s' % ', '.join(os.path.join(args.out, 'bench%s%s' % (suffix, e))
-                                    for e in ['.md', '.json', '.svg', '-strain.svg']))
+                                    for e in OUTPUTS))
     return 0
 
 

@@ -10,6 +10,7 @@ tests that JSON values need (Transcrypt's `isinstance` does not know JS's plain 
 # __pragma__ ('skip')
 import json as _json
 import math as _math
+import re as _re
 
 
 def f64(n):
@@ -34,6 +35,30 @@ def parse_json(text):
         return (True, _json.loads(text, parse_int=float, parse_constant=_reject_constant))
     except (ValueError, RecursionError):
         return None
+
+
+def too_deep(text, limit):
+    """True when the text nests arrays and objects more than `limit` deep (outside strings),
+    checked before parsing: CPython's parser gives up (RecursionError) near 1000 levels where
+    JSON.parse does not, and a bound that both runtimes test the same way says the same thing
+    in both. Invalid text is measured all the same, so the order of the checks agrees too."""
+    if not isinstance(text, str) or text.count('[') + text.count('{') <= limit:
+        return False
+    bare = _re.sub(r'[^\[\]{}]', '', _STRING.sub('', text))
+    depth = 0
+    for c in bare:
+        if c == '[' or c == '{':
+            depth += 1
+            if depth > limit:
+                return True
+        else:
+            depth -= 1
+    return False
+
+
+# A string as JS's scanner below skips it: an escape takes the next character, and an
+# unterminated string runs to the end of the text.
+_STRING = _re.compile(r'"(?:[^"\\]|\\[\s\S])*(?:"|\\?\Z)')
 
 
 def to_json(value):
@@ -150,6 +175,32 @@ def parse_json(text):
         return [True, JSON.parse (text)]
     except:
         return None
+
+
+def too_deep(text, limit):
+    if typeof (text) != 'string':
+        return False
+    depth = 0
+    inside = False
+    i = 0
+    n = text.length
+    while i < n:
+        c = text.charCodeAt (i)
+        if inside:
+            if c == 92:
+                i += 1
+            elif c == 34:
+                inside = False
+        elif c == 34:
+            inside = True
+        elif c == 91 or c == 123:
+            depth += 1
+            if depth > limit:
+                return True
+        elif c == 93 or c == 125:
+            depth -= 1
+        i += 1
+    return False
 
 
 def to_json(value):

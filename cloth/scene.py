@@ -8,7 +8,7 @@ CPython and JS would spell it differently.
 
 import math
 
-from cloth.host import parse_json, kind_of, is_finite, key_list, has_key, as_index
+from cloth.host import too_deep, parse_json, kind_of, is_finite, key_list, has_key, as_index
 
 # Limits. A grid larger than MAX_VERTICES would need hundreds of MB of state (and would not
 # run in real time anyway); the other bounds keep every parameter physically meaningful.
@@ -17,6 +17,8 @@ MAX_SUBSTEPS = 1000
 MAX_ITERATIONS = 10000
 MAX_FRAMES = 10000000
 MAX_ACTIONS = 100000
+# A scene nests 4 deep (scene, actions, an action, its `to`); deeper is not a scene.
+MAX_DEPTH = 32
 
 SOLVERS = ['jakobsen', 'xpbd']
 DEFAULT_SOLVER = 'xpbd'
@@ -121,6 +123,8 @@ def point(value, key):
 
 def parse_scene(text):
     """JSON text -> Scene, or SceneError naming the offending key."""
+    if too_deep(text, MAX_DEPTH):
+        fail('scene: nested more than ' + str(MAX_DEPTH) + ' levels deep')
     parsed = parse_json(text)
     if parsed is None:
         fail('scene: not valid JSON')
@@ -256,17 +260,43 @@ def parse_actions(actions, n):
 
 
 def stable_sort_by_frame(actions):
-    """Insertion sort: stable, and the same in both runtimes (lists are usually sorted)."""
-    out = []
-    for i in range(len(actions)):
-        out.append(actions[i])
-        j = len(out) - 1
-        while j > 0 and out[j - 1].frame > out[j].frame:
-            tmp = out[j - 1]
-            out[j - 1] = out[j]
-            out[j] = tmp
-            j -= 1
-    return out
+    """Bottom-up merge sort by frame: stable (actions of one frame keep the order they were
+    written in), n log n in any order, and the same steps in both runtimes. A list already in
+    frame order, the usual case, is returned after one pass."""
+    n = len(actions)
+    ordered = True
+    for i in range(1, n):
+        if actions[i - 1].frame > actions[i].frame:
+            ordered = False
+            break
+    if ordered:
+        return actions
+    src = [a for a in actions]
+    dst = [a for a in actions]
+    width = 1
+    while width < n:
+        lo = 0
+        while lo < n:
+            mid = min(lo + width, n)
+            hi = min(lo + width + width, n)
+            i = lo
+            j = mid
+            k = lo
+            while k < hi:
+                # `<=` takes from the left run on ties: that is what keeps the sort stable.
+                if i < mid and (j >= hi or src[i].frame <= src[j].frame):
+                    dst[k] = src[i]
+                    i += 1
+                else:
+                    dst[k] = src[j]
+                    j += 1
+                k += 1
+            lo = hi
+        tmp = src
+        src = dst
+        dst = tmp
+        width += width
+    return src
 
 
 def check_holds(actions):

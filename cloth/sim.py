@@ -63,28 +63,14 @@ class Cloth:
         self.spacing = h
         self.n_verts = n
 
-        # The constants of a step, computed once: substep size, a h^2, damping factor.
-        self.dt = scene.dt
-        self.substeps = scene.substeps
-        self.iterations = scene.iterations
-        self.h = scene.dt / scene.substeps
-        h2 = self.h * self.h
-        self.ax = scene.gravity_x * h2
-        self.ay = scene.gravity_y * h2
-        self.keep = 1.0 / (1.0 + scene.damping * self.h)
-        self.max_step = scene.max_speed * self.h
-        self.use_xpbd = scene.solver == 'xpbd'
-        self.alpha = scene.compliance / h2
-        self.tolerance = scene.tolerance
-        self.use_tethers = scene.tethers
-        self.use_cells = scene.cells and cols > 1 and rows > 1
-        # Line solves assume inextensible edges of one rest length (not compliant ones), and a
-        # step that moves a vertex little against its links: their linearisation of a taut,
-        # loaded line overshoots when gravity moves it more than LINE_STEP of the spacing in
-        # one step (measured: a taut cloth under 100 g, or with steps of 1/32 s, never came
-        # to rest with them; the benchmark's scenes move 0.25-0.5% per step).
-        fall = math.sqrt(self.ax * self.ax + self.ay * self.ay)
-        self.use_lines = scene.lines and scene.compliance == 0.0 and fall <= LINE_STEP * h
+        # Zero-sized until configure() sizes what the scene's settings use.
+        self.line_nx = f64(0)
+        self.line_ny = f64(0)
+        self.line_cc = f64(0)
+        self.line_cd = f64(0)
+        self.last_pos = f64(0)
+        self.still_from = f64(0)
+        configure(self, scene)
 
         self.pos = f64(2 * n)
         self.prev = f64(2 * n)
@@ -103,12 +89,6 @@ class Cloth:
             rest_at(self, k)
 
         self.build_edges(scene.shear)
-        # Work arrays of the line solves (one line at a time).
-        longest = max(cols, rows)
-        self.line_nx = f64(longest if self.use_lines else 0)
-        self.line_ny = f64(longest if self.use_lines else 0)
-        self.line_cc = f64(longest if self.use_lines else 0)
-        self.line_cd = f64(longest if self.use_lines else 0)
         self.lam = f64(self.n_edges)
         # Set when a vertex is let go: the next step starts with `relieve`.
         self.relieve_pending = False
@@ -136,14 +116,7 @@ class Cloth:
         # Vertex-steps whose speed hit max_speed: non-zero means unstable settings.
         self.clamped = 0
         # Sleep (scene key `sleep`): frames in a row that were still, and whether at rest.
-        self.use_sleep = scene.sleep
-        extent = max(max(cols, rows) - 1, 1) * h
-        self.still_motion2 = SLEEP_MOTION * SLEEP_MOTION * extent * extent
-        self.drift2 = SLEEP_DRIFT * SLEEP_DRIFT * extent * extent
-        self.sleep_frames = int(math.ceil(SLEEP_TIME / scene.dt))
         self.still_frames = 0
-        self.last_pos = f64(2 * n if scene.sleep else 0)     # positions a frame ago
-        self.still_from = f64(2 * n if scene.sleep else 0)   # ... at the window's start
         self.asleep = False
 
     def build_edges(self, shear):
@@ -351,6 +324,75 @@ def lines(cloth):
         solve_lines(cloth.pos, cloth.inv_mass, 0, 1, cols, h, rows, cols, cloth.tolerance,
                     LINE_NEWTON, cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd)
         cloth.projections += rows * (cols - 1)
+
+
+def configure(cloth, scene):
+    """The constants of a step, from the scene's settings: substep size, a h^2, damping
+    factor, which solver and which of its parts. Called at construction, and by `retune`
+    when a person changes a setting of the running cloth."""
+    cloth.scene = scene
+    n = cloth.n_verts
+    cloth.dt = scene.dt
+    cloth.substeps = scene.substeps
+    cloth.iterations = scene.iterations
+    cloth.h = scene.dt / scene.substeps
+    h2 = cloth.h * cloth.h
+    cloth.ax = scene.gravity_x * h2
+    cloth.ay = scene.gravity_y * h2
+    cloth.keep = 1.0 / (1.0 + scene.damping * cloth.h)
+    cloth.max_step = scene.max_speed * cloth.h
+    cloth.use_xpbd = scene.solver == 'xpbd'
+    cloth.alpha = scene.compliance / h2
+    cloth.tolerance = scene.tolerance
+    cloth.use_tethers = scene.tethers
+    cloth.use_cells = scene.cells and cloth.cols > 1 and cloth.rows > 1
+    # Line solves assume inextensible edges of one rest length (not compliant ones), and a
+    # step that moves a vertex little against its links: their linearisation of a taut,
+    # loaded line overshoots when gravity moves it more than LINE_STEP of the spacing in
+    # one step (measured: a taut cloth under 100 g, or with steps of 1/32 s, never came
+    # to rest with them; the benchmark's scenes move 0.25-0.5% per step).
+    fall = math.sqrt(cloth.ax * cloth.ax + cloth.ay * cloth.ay)
+    cloth.use_lines = (scene.lines and scene.compliance == 0.0 and
+                       fall <= LINE_STEP * cloth.spacing)
+    # Work arrays of the line solves (one line at a time), and the sleep test's two copies of
+    # the positions (a frame ago, at the window's start): allocated when first needed.
+    longest = max(cloth.cols, cloth.rows)
+    if cloth.use_lines and len(cloth.line_nx) < longest:
+        cloth.line_nx = f64(longest)
+        cloth.line_ny = f64(longest)
+        cloth.line_cc = f64(longest)
+        cloth.line_cd = f64(longest)
+    cloth.use_sleep = scene.sleep
+    extent = max(longest - 1, 1) * cloth.spacing
+    cloth.still_motion2 = SLEEP_MOTION * SLEEP_MOTION * extent * extent
+    cloth.drift2 = SLEEP_DRIFT * SLEEP_DRIFT * extent * extent
+    cloth.sleep_frames = int(math.ceil(SLEEP_TIME / scene.dt))
+    if scene.sleep and len(cloth.last_pos) < 2 * n:
+        cloth.last_pos = f64(2 * n)
+        cloth.still_from = f64(2 * n)
+
+
+def retune(cloth, scene):
+    """Apply new settings (a scene on the same grid, parse_scene-checked) to the running
+    cloth: positions, velocities, pins and held vertices stay as they are."""
+    if scene.cols != cloth.cols or scene.rows != cloth.rows or \
+            scene.spacing != cloth.spacing or scene.shear != cloth.scene.shear:
+        raise SceneError('scene: cols, rows, spacing and shear make the grid; '
+                         'a change of them needs a new cloth')
+    h_old = cloth.h
+    configure(cloth, scene)
+    # Verlet keeps the velocity as pos - prev over one step of size h: a new step size
+    # rescales it, or a change of substeps would change the cloth's speed.
+    if cloth.h != h_old:
+        f = cloth.h / h_old
+        pos = cloth.pos
+        prev = cloth.prev
+        for i in range(2 * cloth.n_verts):
+            prev[i] = pos[i] - (pos[i] - prev[i]) * f
+    cloth.anchors_stale = True
+    cloth.converged = False
+    cloth.asleep = False
+    cloth.still_frames = 0
 
 
 # ---- holding, pinning ---------------------------------------------------------------------

@@ -41,6 +41,18 @@ def test_quick_exits_0(quick):
         assert (out / name).stat().st_size > 0, name
 
 
+def test_quick_files_are_ignored_by_git(quick):
+    """A quick run in the default folder must not leave files one `git add -A` from a
+    commit: every file it wrote, placed in bench/results/, is ignored."""
+    proc, out = quick
+    names = sorted(os.listdir(out))
+    assert names
+    paths = ['bench/results/' + name for name in names]
+    check = subprocess.run(['git', 'check-ignore', '--no-index'] + paths, cwd=ROOT,
+                           capture_output=True, text=True)
+    assert sorted(check.stdout.split()) == paths, check.stdout + check.stderr
+
+
 def test_table_has_the_seed_rows(quick):
     proc, out = quick
     assert proc.returncode == 0, proc.stderr[-3000:]

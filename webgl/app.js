@@ -4,19 +4,23 @@
 // Loop: the core advances a fixed dt per frame(); the wall clock appears only
 // here. Elapsed time goes into an accumulator, capped at MAX_GAP (a tab switch
 // or a stall becomes a short pause, never a huge step), and at most MAX_CATCHUP
-// frames run per animation frame (the rest of a backlog is dropped, so a slow
-// machine runs in slow motion instead of spiralling).
+// frames run per animation frame, and no more once FRAME_BUDGET_MS is spent (the
+// rest of a backlog is dropped: a slow scene runs in slow motion and says so,
+// instead of spiralling or making input wait for a burst of catch-up frames).
 'use strict';
 
 (function () {
   const MAX_GAP = 0.25;        // seconds of wall clock counted per animation frame at most
   const MAX_CATCHUP = 4;       // core frames per animation frame at most
+  const FRAME_BUDGET_MS = 12;  // simulation time per animation frame at most (one frame always runs)
+  const SLOW_MOTION = 0.9;     // below this share of real time, the readout says "slow motion"
   const READOUT_MS = 250;      // readout refresh period
   const EMA = 0.1;             // smoothing of the timing readouts
 
   const core = window.clothCore, scenes = window.clothScenes;
   const canvas = document.getElementById('view');
-  const query = new URLSearchParams(window.location.search);
+  const options = window.clothOptions.parse(window.location.search, scenes.PRESETS);
+  const own = window.clothOptions.own;
 
   const s = {
     cloth: null, m: null, sceneText: '', sceneObj: null, view: null,
@@ -24,6 +28,7 @@
     mode: 'strain', scaleMode: 'auto', fullScale: 0.05,
     paused: false, acc: 0, last: -1, frames: 0, nextAction: 0, renders: 0, dirty: true, needMeasure: true,
     simMs: NaN, renderMs: NaN, fps: NaN, lastReadout: 0, scale: 0,
+    wanted: 0, played: 0, speed: 1,   // seconds of wall clock and of simulation since the last readout
   };
 
   const ui = window.clothUI.create({
@@ -41,7 +46,7 @@
   });
 
   const renderer = window.clothRenderer.create(canvas, {
-    webgl: query.get('webgl') || 'auto',
+    webgl: options.webgl,
     onLost: function () { ui.error('The WebGL context was lost; waiting for the browser to restore it.'); },
     onRestored: function () {
       if (ui.errorText().indexOf('WebGL context was lost') >= 0) ui.clearError();
@@ -72,8 +77,13 @@
   function load(text, preset, view) {
     let cloth, obj;
     try {
-      cloth = core.load(text);
+      // The core checks the scene (its messages, as in the CLI); then the page's limits,
+      // before anything is built: a scene beyond them would take seconds a frame.
+      const scene = core.parseScene(text);
       obj = JSON.parse(text);
+      const limit = scenes.pageLimit(obj);
+      if (limit) throw new Error(limit);
+      cloth = core.build(scene);
     } catch (e) {
       const msg = e && e.message ? e.message : String(e);
       ui.error('Scene not loaded: ' + msg + (s.cloth ? ' (the previous scene keeps running)' : ''));
@@ -92,6 +102,8 @@
     s.frames = 0;
     s.nextAction = 0;
     s.acc = 0;
+    s.simMs = NaN;            // timings and speed are the new scene's own
+    s.wanted = 0; s.played = 0; s.speed = 1;
     if (renderer.ok) {
       renderer.setScene(cloth);
       renderer.setView(s.view);
@@ -103,6 +115,11 @@
     ui.setSolver(s.params.solver);
     ui.setParams(s.params);
     if (renderer.ok && !renderer.lost) render();
+    const work = scenes.workOf(obj);
+    if (work > scenes.REAL_TIME_WORK) {
+      ui.note('This scene needs about ' + work.toExponential(1) + ' edge updates a frame: ' +
+              'expect slow motion on an ordinary machine');
+    }
     return cloth;
   }
 
@@ -122,45 +139,121 @@
     return true;
   }
 
+  // Keys that leave the grid as it is apply to the running cloth (core.setScene): its
+  // positions, speeds, pins and held vertices stay. Columns and rows make a new grid.
+  const GRID_KEYS = { cols: 1, rows: 1 };
+
   function setParam(key, raw) {
     const c = scenes.clamp(key, raw);
     if (c.value === null) { ui.note(c.note); ui.setParams(s.params); return; }
-    ui.note(c.note);
     const p = Object.assign({}, s.params);
     p[key] = c.value;
-    ui.setParams(p);
-    rebuild(p, c.note);
+    if (own(GRID_KEYS, key)) regrid(p, c.note);
+    else retune(p, c.note);
   }
 
   // A solver starts from its own substeps and iterations.
   function setSolver(name) {
-    const d = scenes.SOLVERS[name];
+    const d = own(scenes.SOLVERS, name) ? scenes.SOLVERS[name] : null;
     if (!d) throw new Error('unknown solver: ' + name);
-    const p = Object.assign({}, s.params, { solver: name, substeps: d.substeps, iterations: d.iterations });
-    rebuild(p, '');
+    retune(Object.assign({}, s.params, { solver: name, substeps: d.substeps, iterations: d.iterations }), '');
   }
 
-  // Reload the current scene with new parameters; a rejected scene leaves the old one.
-  function rebuild(p, note) {
+  // The scene with the settings of p (those the panel shows) written into it.
+  function withSettings(obj, p) {
+    const out = Object.assign({}, obj);
+    out.iterations = p.iterations;
+    out.substeps = p.substeps;
+    out.solver = p.solver;
+    out.damping = p.damping;
+    out.gravity = [Array.isArray(obj.gravity) ? obj.gravity[0] : 0, p.gravity];
+    return out;
+  }
+
+  // New settings for the running cloth; a rejected scene leaves everything as it was.
+  function retune(p, note) {
+    const obj = withSettings(s.sceneObj, p);
+    const text = JSON.stringify(obj);
     try {
-      if (s.preset !== 'custom') {
-        usePreset(s.preset, p);
-        ui.note(note);
-      } else {
-        const obj = Object.assign({}, s.sceneObj);
-        obj.cols = p.cols; obj.rows = p.rows; obj.iterations = p.iterations; obj.substeps = p.substeps;
-        obj.solver = p.solver;
-        obj.damping = p.damping;
-        obj.gravity = [Array.isArray(obj.gravity) ? obj.gravity[0] : 0, p.gravity];
-        if (Array.isArray(obj.pins)) {
-          obj.pins = obj.pins.filter(function (k) { return k < p.cols * p.rows; });
-        }
-        load(JSON.stringify(obj), 'custom', scenes.viewFor(obj));
+      const limit = scenes.pageLimit(obj);
+      if (limit) throw new Error(limit);
+      core.setScene(s.cloth, text);
+    } catch (e) {
+      ui.error('Setting not applied: ' + e.message + ' (the cloth runs on as it was)');
+      ui.setParams(s.params);
+      ui.setSolver(s.params.solver);
+      return;
+    }
+    s.sceneObj = obj;
+    s.sceneText = text;       // Reset restarts with the new settings
+    s.params = paramsFrom(obj, s.cloth);
+    ui.setParams(s.params);
+    ui.setSolver(s.params.solver);
+    ui.note(note);
+    s.dirty = true;
+  }
+
+  // A new grid. Pins keep their meaning, row and column: the preset's pins for the new size
+  // (a custom scene's own, moved to the same row and column), with the pins a person set or
+  // removed carried over; what falls outside the new grid is dropped, and the note says so.
+  function regrid(p, note) {
+    const oldCols = s.cloth.cols, oldRows = s.cloth.rows;
+    function moved(k) {
+      const r = Math.floor(k / oldCols), c = k - r * oldCols;
+      return r < p.rows && c < p.cols ? r * p.cols + c : -1;
+    }
+    const dropped = [];
+    const scenePins = {};
+    s.cloth.scene.pins.forEach(function (k) { scenePins[k] = true; });
+    const changed = [];     // vertices whose pin a person toggled
+    for (let k = 0; k < s.cloth.n_verts; k++) {
+      if ((s.cloth.pinned[k] === 1) !== !!scenePins[k]) changed.push(k);
+    }
+    let obj, view, preset = s.preset;
+    if (preset !== 'custom') {
+      const made = scenes.make(preset, p);
+      obj = made.scene; view = made.view;
+    } else {
+      obj = withSettings(s.sceneObj, p);
+      obj.cols = p.cols; obj.rows = p.rows;
+      obj.pins = [];
+      s.cloth.scene.pins.forEach(function (k) {
+        const m = moved(k);
+        if (m >= 0) obj.pins.push(m); else dropped.push('pin ' + k);
+      });
+      if (Array.isArray(s.sceneObj.actions)) {
+        let lost = 0;
+        obj.actions = [];
+        s.sceneObj.actions.forEach(function (a) {
+          const m = moved(a.vertex);
+          if (m >= 0) obj.actions.push(Object.assign({}, a, { vertex: m })); else lost++;
+        });
+        if (lost) dropped.push(lost + ' scripted action' + (lost > 1 ? 's' : ''));
       }
+      view = scenes.viewFor(obj);
+    }
+    const pins = {};
+    obj.pins.forEach(function (k) { pins[k] = true; });
+    changed.forEach(function (k) {
+      const m = moved(k);
+      if (m < 0) { if (s.cloth.pinned[k] === 1) dropped.push('pin ' + k); return; }
+      if (s.cloth.pinned[k] === 1) pins[m] = true; else delete pins[m];
+    });
+    obj.pins = Object.keys(pins).map(Number).sort(function (x, y) { return x - y; });
+    const text = JSON.stringify(obj);
+    try {
+      load(text, preset, view);
     } catch (e) {
       ui.setParams(s.params);  // the banner shows why; the old scene runs on
-      ui.setSolver(s.params.solver);
+      return;
     }
+    const notes = [];
+    if (note) notes.push(note);
+    if (dropped.length) {
+      notes.push('outside the ' + p.cols + '×' + p.rows + ' grid, dropped: ' +
+                 dropped.slice(0, 6).join(', ') + (dropped.length > 6 ? ', …' : ''));
+    }
+    ui.note(notes.join('; '));
   }
 
   // ---- colour -------------------------------------------------------------
@@ -187,45 +280,99 @@
     s.dirty = true;
   }
 
+  // Auto is the seed's normalisation by the frame's maximum, above a floor: a cloth at rest
+  // has solver noise of up to about 1e-3, which must stay dark, not be painted as strain.
+  const AUTO_FLOOR = 0.01;
+
+  function frameMax() { return s.mode === 'stress' ? s.cloth.max_stress : s.cloth.max_diff; }
+
   function currentScale() {
     if (s.scaleMode === 'fixed') return s.fullScale;
-    return s.mode === 'stress' ? s.cloth.max_stress : s.cloth.max_diff;
+    return Math.max(frameMax(), AUTO_FLOOR);
   }
 
   // ---- stepping and drawing -------------------------------------------------
 
-  function simulate(n) {
+  // Runs up to n frames; with a budget (ms), stops once it is spent (at least one frame
+  // runs). Returns the frames run.
+  function simulate(n, budgetMs) {
     const m = s.m;
     const scripted = s.cloth.scene.actions.length;
     if (s.cloth.asleep && s.nextAction >= scripted) {
       // At rest (the core stopped stepping it): nothing to step, measure or draw until an
       // operation wakes it.
       s.frames += n;
-      s.simMs = Number.isFinite(s.simMs) ? s.simMs + EMA * (0 - s.simMs) : 0;
-      return;
+      s.simMs = NaN;   // nothing to time: the readout says "at rest"
+      return n;
     }
     const t0 = performance.now();
     // A scene's scripted actions play at their frames, as in the CLI (core.applyDue).
-    for (let i = 0; i < n; i++) {
-      if (s.nextAction < scripted) s.nextAction = core.applyDue(s.cloth, s.nextAction, s.frames + i);
+    let done = 0;
+    while (done < n) {
+      if (s.nextAction < scripted) s.nextAction = core.applyDue(s.cloth, s.nextAction, s.frames + done);
       m.frame();
+      done++;
+      if (budgetMs > 0 && performance.now() - t0 > budgetMs) break;
     }
+    n = done;
     m.measure();
     // The core's max_speed safety net engaged: the settings are unstable (one sweep per
     // step on an undamped grid). Say so rather than let it pass silently.
     if (s.cloth.clamped > s.clamped) {
       s.clamped = s.cloth.clamped;
-      ui.note('Unstable settings: speeds were capped at max_speed; use 2+ iterations, or damping');
+      // (Damping does not cure it: measured, 1.8 million capped vertex-steps with damping 1.)
+      ui.note('Unstable settings: speeds were capped at max_speed; use more iterations or ' +
+              'substeps, or the default solver');
     }
     const ms = (performance.now() - t0) / n;
     s.simMs = Number.isFinite(s.simMs) ? s.simMs + EMA * (ms - s.simMs) : ms;
     s.frames += n;
     s.needMeasure = false;
     s.dirty = true;
+    return n;
+  }
+
+  // The overlays' boxes in client pixels (left, top, right, bottom each), measured on a
+  // resize and with each readout, not per frame; an overlay over a held vertex fades.
+  const overlayEls = [document.getElementById('legend'), document.getElementById('hud')];
+  const overlayBox = new Float64Array(4 * overlayEls.length);
+  const overlayUnder = [false, false];
+
+  function measureOverlays() {
+    for (let i = 0; i < overlayEls.length; i++) {
+      const r = overlayEls[i].getBoundingClientRect();
+      overlayBox[4 * i] = r.left; overlayBox[4 * i + 1] = r.top;
+      overlayBox[4 * i + 2] = r.right; overlayBox[4 * i + 3] = r.bottom;
+    }
+  }
+
+  function fadeOverlays() {
+    const c = s.cloth, dragging = input.dragging() > 0 && renderer.ok;
+    const cr = dragging ? canvasBox : null;
+    for (let i = 0; i < overlayEls.length; i++) {
+      let under = false;
+      if (dragging) {
+        const pad = 24;   // a finger's width around the vertex
+        for (let k = 0; k < c.n_verts && !under; k++) {
+          if (c.held[k] === 0) continue;
+          const p = renderer.toCanvas(c.pos[2 * k], c.pos[2 * k + 1]);
+          const x = cr[0] + p[0], y = cr[1] + p[1];
+          under = x > overlayBox[4 * i] - pad && x < overlayBox[4 * i + 2] + pad &&
+                  y > overlayBox[4 * i + 1] - pad && y < overlayBox[4 * i + 3] + pad;
+        }
+      }
+      if (under !== overlayUnder[i]) { overlayUnder[i] = under; overlayEls[i].classList.toggle('under', under); }
+    }
+  }
+  const canvasBox = new Float64Array(2);
+  function measureCanvas() {
+    const r = canvas.getBoundingClientRect();
+    canvasBox[0] = r.left; canvasBox[1] = r.top;
   }
 
   function render() {
     if (!s.cloth || !renderer.ok || renderer.lost) return;
+    fadeOverlays();
     if (s.needMeasure) { s.m.measure(); s.needMeasure = false; }
     const t0 = performance.now();
     s.scale = currentScale();
@@ -252,12 +399,18 @@
   function readouts(now) {
     if (now - s.lastReadout < READOUT_MS || !s.cloth) return;
     s.lastReadout = now;
+    measureOverlays();
+    measureCanvas();
     const c = s.cloth;
+    if (s.wanted > 0) s.speed = s.played / s.wanted;
+    s.wanted = 0; s.played = 0;
+    const slow = !s.paused && s.speed < SLOW_MOTION;
     ui.setReadouts({
-      simMs: s.simMs, renderMs: s.renderMs, fps: s.fps, rms: c.rms_diff, max: c.max_diff,
-      size: c.cols + '×' + c.rows + ' · ' + c.n_edges + ' edges' + (c.asleep ? ' · at rest' : ''),
+      simMs: s.simMs, renderMs: s.renderMs, fps: s.fps, rms: c.rms_strain, max: c.max_strain,
+      size: c.cols + '×' + c.rows + ' · ' + c.n_edges + ' edges' + (c.asleep ? ' · at rest' : '') +
+        (slow ? ' · slow motion ×' + s.speed.toFixed(2) : ''),
     });
-    ui.setLegend(s.scale, s.scaleMode === 'auto');
+    ui.setLegend(s.scale, s.scaleMode === 'fixed' ? 'fixed' : (frameMax() > AUTO_FLOOR ? 'max' : 'floor'));
   }
 
   function tick(nowMs) {
@@ -271,9 +424,13 @@
       if (!s.paused && s.cloth) {
         const dt = s.cloth.dt;
         s.acc += gap;
-        let n = Math.floor(s.acc / dt);
-        if (n > MAX_CATCHUP) { n = MAX_CATCHUP; s.acc = 0; } else { s.acc -= n * dt; }
-        if (n > 0) simulate(n);
+        const due = Math.min(Math.floor(s.acc / dt), MAX_CATCHUP);
+        const done = due > 0 ? simulate(due, FRAME_BUDGET_MS) : 0;
+        // What the budget or the catch-up cap left undone is dropped, not owed: a slow scene
+        // runs in slow motion (the readout says so) and input is handled every frame.
+        s.acc = done < due || Math.floor(s.acc / dt) > MAX_CATCHUP ? 0 : s.acc - done * dt;
+        s.wanted += gap;
+        s.played += s.cloth.asleep ? gap : done * dt;
       }
       if (s.dirty) render();
     } catch (e) {
@@ -296,6 +453,7 @@
       if (!s.cloth || !renderer.ok) return -1;
       return s.m.nearest(x, y, radiusCss / renderer.pixelsPerMetre());
     },
+    positionOf: function (k) { return [s.cloth.pos[2 * k], s.cloth.pos[2 * k + 1]]; },
     grab: function (k, x, y) { s.m.grab(k, x, y); s.needMeasure = true; s.dirty = true; },
     move: function (k, x, y) { s.m.move(k, x, y); s.needMeasure = true; s.dirty = true; },
     release: function (k) {
@@ -310,6 +468,9 @@
     if (!renderer.ok) return;
     const r = canvas.getBoundingClientRect();
     renderer.resize(r.width, r.height);
+    input.reproject();
+    measureOverlays();
+    measureCanvas();
     s.dirty = true;
   }
 
@@ -330,6 +491,9 @@
         const dpr = window.devicePixelRatio || 1;
         if (dev && (Math.abs(dev.inlineSize - w * dpr) > 1 || Math.abs(dev.blockSize - h * dpr) > 1)) dev = null;
         renderer.resize(w, h, dev ? dev.inlineSize : 0, dev ? dev.blockSize : 0);
+        input.reproject();   // a held vertex stays under its pointer through the resize
+        measureOverlays();
+        measureCanvas();
         s.dirty = true;
         render();  // same task as the resize: no blank frame
       });
@@ -394,12 +558,12 @@
   ui.setMode(s.mode);
   ui.setScale(s.scaleMode, s.fullScale);
   ui.setPaused(false);
-  const first = query.get('preset');
   try {
-    usePreset(first && scenes.PRESETS[first] ? first : 'curtain');
+    usePreset(options.preset);
   } catch (e) {
     ui.fatal('The default scene failed to load: ' + e.message);
   }
-  if (query.get('paused') === '1') setPaused(true);
+  if (options.paused) setPaused(true);
+  if (options.notes.length) ui.note(options.notes.join('. '));
   window.requestAnimationFrame(tick);
 })();

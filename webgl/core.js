@@ -34,12 +34,16 @@ window.clothCore = (function (api, modules) {
     run: wrap(function (text, frames) { return api.run(text, frames); }),
     // load(sceneJsonText) -> a live Cloth (typed arrays, frame(), measure(), grab()...).
     load: wrap(function (text) { return api.load(text); }),
+    // build(scene) -> a Cloth from a scene parseScene checked (no second parse).
+    build: wrap(function (scene) { return api.build(scene); }),
+    // setScene(cloth, sceneJsonText): new settings for the running cloth, same grid
+    // (cloth/api.py set_scene); throws, changing nothing, on a bad scene.
+    setScene: wrap(function (cloth, text) { return api.set_scene(cloth, text); }),
     message: message,
     api: api,
   };
-  if (typeof api.parse_scene === 'function') {
-    core.parseScene = wrap(function (text) { return api.parse_scene(text); });
-  }
+  // parseScene(sceneJsonText) -> the checked scene, nothing built (cloth/api.py check).
+  core.parseScene = wrap(function (text) { return api.check(text); });
 
   // ops(cloth): the per-frame operations as closures over one cloth, made once per
   // scene. They call cloth/sim.py's module functions where it has them: calling a

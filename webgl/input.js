@@ -1,8 +1,10 @@
 // Pointer input: mouse, touch and pen through Pointer Events.
 //
-// Press on or near a vertex: it is grabbed and held exactly under the pointer
-// until release (each pointer holds its own vertex, so two fingers can pull two
-// corners). Right-click (or a pen's barrel button), Shift+click, or a double-tap
+// Press on or near a vertex: it is grabbed where it is, and from then on keeps
+// its offset from the pointer until release (a press never snaps it to the
+// pointer, so a tap or a pin toggle moves nothing); each pointer holds its own
+// vertex, so two fingers can pull two corners. Through a resize of the view the
+// held vertex stays at the same place under the pointer. Right-click (or a pen's barrel button), Shift+click, or a double-tap
 // with a finger or pen toggles a pin.
 // The canvas has CSS `touch-action: none`, otherwise the browser claims a touch
 // for scrolling and sends pointercancel on the first move.
@@ -15,10 +17,11 @@ window.clothInput = (function () {
   const DOUBLE_TAP_PX = 30;
   const TAP_MOVE_PX = 10;
 
-  // app: {toWorld(clientX, clientY) -> [x, y], pick(x, y, radiusCss) -> k,
+  // app: {toWorld(clientX, clientY) -> [x, y], pick(x, y, radiusCss) -> k, positionOf(k) -> [x, y],
   //       grab(k, x, y), move(k, x, y), release(k), togglePin(k), isHeld(k)}
   function attach(canvas, app) {
-    const drags = new Map();   // pointerId -> {k, x0, y0, moved}
+    // pointerId -> {k, x0, y0 (press, client px), cx, cy (latest), ox, oy (vertex - pointer, m), moved}
+    const drags = new Map();
     let lastTap = null;         // {t, x, y, k}
 
     function radius(e) { return PICK_RADIUS[e.pointerType] || PICK_RADIUS.mouse; }
@@ -29,6 +32,12 @@ window.clothInput = (function () {
     }
 
     canvas.addEventListener('contextmenu', function (e) { e.preventDefault(); });
+    // A sideways wheel or two-finger swipe would go back in history (Chromium's overscroll
+    // navigation, which CSS overscroll-behavior does not stop over a canvas): nothing here
+    // scrolls sideways, so sideways wheels are dropped.
+    window.addEventListener('wheel', function (e) {
+      if (Math.abs(e.deltaX) > Math.abs(e.deltaY)) e.preventDefault();
+    }, { passive: false });
 
     canvas.addEventListener('pointerdown', function (e) {
       const hit = pickAt(e);
@@ -41,8 +50,10 @@ window.clothInput = (function () {
       if (e.button !== 0 || hit.k < 0 || app.isHeld(hit.k)) return;
       e.preventDefault();
       try { canvas.setPointerCapture(e.pointerId); } catch (err) { /* untrusted event */ }
-      drags.set(e.pointerId, { k: hit.k, x0: e.clientX, y0: e.clientY, moved: false });
-      app.grab(hit.k, hit.w[0], hit.w[1]);
+      const v = app.positionOf(hit.k);
+      drags.set(e.pointerId, { k: hit.k, x0: e.clientX, y0: e.clientY, cx: e.clientX, cy: e.clientY,
+                               ox: v[0] - hit.w[0], oy: v[1] - hit.w[1], moved: false });
+      app.grab(hit.k, v[0], v[1]);
       canvas.classList.add('dragging');
     });
 
@@ -55,20 +66,22 @@ window.clothInput = (function () {
         return;
       }
       if (Math.abs(e.clientX - d.x0) + Math.abs(e.clientY - d.y0) > TAP_MOVE_PX) d.moved = true;
-      const w = app.toWorld(e.clientX, e.clientY);
-      app.move(d.k, w[0], w[1]);
+      follow(d, e.clientX, e.clientY);
     });
+
+    function follow(d, clientX, clientY) {
+      d.cx = clientX; d.cy = clientY;
+      const w = app.toWorld(clientX, clientY);
+      app.move(d.k, w[0] + d.ox, w[1] + d.oy);
+    }
 
     function end(e) {
       const d = drags.get(e.pointerId);
       if (!d) return;
       drags.delete(e.pointerId);
       if (drags.size === 0) canvas.classList.remove('dragging');
-      if (e.type === 'pointerup') {
-        // Land exactly where the pointer was let go.
-        const w = app.toWorld(e.clientX, e.clientY);
-        app.move(d.k, w[0], w[1]);
-      }
+      // Land exactly where the pointer was let go (a tap that did not move moves nothing).
+      if (e.type === 'pointerup') follow(d, e.clientX, e.clientY);
       app.release(d.k);
       if (e.type === 'pointerup' && e.pointerType !== 'mouse' && !d.moved) {
         const now = e.timeStamp;
@@ -89,6 +102,8 @@ window.clothInput = (function () {
       // Let go of everything (a scene change invalidates vertex indices).
       releaseAll: function () { drags.clear(); canvas.classList.remove('dragging'); },
       dragging: function () { return drags.size; },
+      // The view changed (a resize): put each held vertex back under its pointer.
+      reproject: function () { drags.forEach(function (d) { follow(d, d.cx, d.cy); }); },
     };
   }
 

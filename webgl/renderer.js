@@ -170,6 +170,11 @@ window.clothRenderer = (function () {
       ok: false, error: '', version: version, gl: gl, lost: false,
       cssWidth: 1, cssHeight: 1, dpr: 1, drawCalls: 0, restores: 0,
     };
+    if (!gl && opts.webgl === '0') {
+      r.error = 'Drawing is off: the URL asks for no WebGL (?webgl=0). Remove it from the ' +
+        'address to see the cloth.';
+      return r;
+    }
     if (!gl) {
       r.error = 'This browser cannot create a WebGL context (neither WebGL 2 nor WebGL 1). ' +
         'Enable hardware acceleration or WebGL in the browser settings, or try another browser.';

@@ -7,6 +7,7 @@
 'use strict';
 
 window.clothScenes = (function () {
+  const own = window.clothOptions.own;
   // Ranges the UI accepts; anything outside is clamped with a visible note.
   const LIMITS = {
     cols: { min: 1, max: 200, int: true, label: 'Columns' },
@@ -95,7 +96,7 @@ window.clothScenes = (function () {
 
   // Returns {scene, view}; params must already be clamped.
   function make(name, params) {
-    const preset = PRESETS[name];
+    const preset = own(PRESETS, name) ? PRESETS[name] : null;
     if (!preset) throw new Error('unknown preset: ' + name);
     const p = Object.assign({}, DEFAULT_PARAMS, preset.params, params || {});
     const spacing = spacingFor(preset, p.cols, p.rows);
@@ -128,12 +129,56 @@ window.clothScenes = (function () {
     return { x0: -margin, x1: w + margin, y0: -h - below - margin, y1: margin };
   }
 
+  // What the page runs at most, for every scene it loads (panel, preset, JSON box, link):
+  // a frame is one task that cannot be split, so a scene beyond these would stop the page
+  // answering a person (1000x1000 took 25-40 s a frame). The CLI has its own, larger limits.
+  const PAGE_LIMITS = { vertices: 200 * 200, work: 4e6 };
+  // A frame's work estimated before loading, in edge updates: per step the sweeps, plus, for
+  // XPBD, tethers, cells and line solves (about 6 per vertex, measured by projections).
+  // Above REAL_TIME_WORK a frame takes more than its 1/60 s on an ordinary machine.
+  const REAL_TIME_WORK = 1e6;
+
+  function workOf(scene) {
+    const cols = scene.cols | 0, rows = scene.rows | 0;
+    const solver = scene.solver === 'jakobsen' ? 'jakobsen' : 'xpbd';
+    const d = SOLVERS[solver];
+    const substeps = Number.isFinite(scene.substeps) ? scene.substeps : d.substeps;
+    const iterations = Number.isFinite(scene.iterations) ? scene.iterations : d.iterations;
+    const n = cols * rows;
+    let m = Math.max(cols - 1, 0) * rows + cols * Math.max(rows - 1, 0);
+    if (scene.shear === true) m += Math.max(cols - 1, 0) * Math.max(rows - 1, 0);
+    return substeps * (Math.max(iterations, 0) * m + (solver === 'xpbd' ? 6 * n : 0));
+  }
+
+  // '' when the page can run the scene object; otherwise why not, in one sentence.
+  function pageLimit(scene) {
+    if (!scene || typeof scene !== 'object' || !Number.isFinite(scene.cols) || !Number.isFinite(scene.rows)) {
+      return '';   // the core says what is wrong with it
+    }
+    const n = scene.cols * scene.rows;
+    if (n > PAGE_LIMITS.vertices) {
+      return 'the page runs at most ' + PAGE_LIMITS.vertices + ' vertices (200×200), and this scene has ' +
+        scene.cols + '×' + scene.rows + ' = ' + n + ' (python -m cloth run takes up to 1000000)';
+    }
+    const work = workOf(scene);
+    if (work > PAGE_LIMITS.work) {
+      return 'a frame of this scene needs about ' + work.toExponential(1) + ' edge updates, and the page ' +
+        'takes at most ' + PAGE_LIMITS.work.toExponential(0) + ' (lower the substeps, the iterations or the grid)';
+    }
+    return '';
+  }
+
   // Clamp a UI value: returns {value, note} (note is '' when in range).
   function clamp(key, raw) {
+    if (!own(LIMITS, key)) throw new Error('unknown parameter: ' + key);
     const lim = LIMITS[key];
-    let v = Number(raw);
+    // Number('') and Number('  ') are 0: an empty field is no number, not a zero.
+    const text = raw === null || raw === undefined ? '' : String(raw).trim();
+    let v = text === '' ? NaN : Number(text);
     if (!Number.isFinite(v)) {
-      return { value: null, note: lim.label + ': "' + raw + '" is not a number' };
+      const shown = text === '' ? '' : ' ("' + text.slice(0, 24) + '")';
+      const what = Number.isNaN(v) ? 'not a number' : 'not a finite number';
+      return { value: null, note: lim.label + ': ' + what + shown + '; the old value is kept' };
     }
     let note = '';
     if (lim.int && v !== Math.round(v)) { v = Math.round(v); note = lim.label + ' rounded to ' + v; }
@@ -142,7 +187,12 @@ window.clothScenes = (function () {
     return { value: v, note: note };
   }
 
-  function defaults(name) { return Object.assign({}, DEFAULT_PARAMS, PRESETS[name].params); }
+  function defaults(name) {
+    if (!own(PRESETS, name)) throw new Error('unknown preset: ' + name);
+    return Object.assign({}, DEFAULT_PARAMS, PRESETS[name].params);
+  }
 
-  return { PRESETS: PRESETS, LIMITS: LIMITS, SOLVERS: SOLVERS, defaults: defaults, make: make, viewFor: viewFor, clamp: clamp };
+  return { PRESETS: PRESETS, LIMITS: LIMITS, SOLVERS: SOLVERS, PAGE_LIMITS: PAGE_LIMITS,
+           REAL_TIME_WORK: REAL_TIME_WORK, defaults: defaults, make: make, viewFor: viewFor,
+           clamp: clamp, workOf: workOf, pageLimit: pageLimit };
 })();

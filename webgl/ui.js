@@ -16,6 +16,22 @@ window.clothUI = (function () {
     });
   }
 
+  const TEXT_INPUTS = { text: 1, number: 1, search: 1, email: 1, url: 1, tel: 1, password: 1 };
+  const LEGEND_TOP = { max: '(top: max)', floor: '(top: floor)', fixed: '(top: fixed)' };
+  const ARROWS = { ArrowLeft: 1, ArrowRight: 1, ArrowUp: 1, ArrowDown: 1 };
+
+  // Does the focused element use this key itself (see the keydown handler)?
+  function ownsKey(t, k) {
+    if (!t || !t.tagName) return false;
+    const tag = t.tagName;
+    if (tag === 'TEXTAREA' || t.isContentEditable) return true;
+    if (tag === 'INPUT' && Object.prototype.hasOwnProperty.call(TEXT_INPUTS, t.type)) return true;
+    if ((tag === 'BUTTON' || tag === 'SUMMARY' || tag === 'A') && (k === ' ' || k === 'Enter')) return true;
+    if ((tag === 'SELECT' || (tag === 'INPUT' && t.type === 'radio')) && ARROWS[k]) return true;
+    if (tag === 'SELECT' && (k === ' ' || k === 'Enter')) return true;
+    return false;
+  }
+
   function fmt(v, digits) {
     if (!Number.isFinite(v)) return '–';
     if (v !== 0 && (Math.abs(v) < 0.001 || Math.abs(v) >= 1e4)) return v.toExponential(2);
@@ -37,6 +53,13 @@ window.clothUI = (function () {
     };
     const params = ['cols', 'rows', 'iterations', 'substeps', 'gravity', 'damping'];
     let noteTimer = 0;
+    let legendName = 'edge |diff|';
+    let helpReturn = null;
+    // A number field's text: what a person typed, or null when the browser could not read a
+    // number out of it (type=number reports '' for `abc`, so '' alone cannot tell).
+    function fieldText(input) {
+      return input.validity && input.validity.badInput ? null : input.value;
+    }
 
     el.pause.addEventListener('click', function () { h.pause(); });
     el.step.addEventListener('click', function () { h.step(); });
@@ -48,7 +71,7 @@ window.clothUI = (function () {
     el.preset.addEventListener('change', function () { h.preset(el.preset.value); });
     $('solver').addEventListener('change', function () { h.solver($('solver').value); });
     params.forEach(function (key) {
-      $(key).addEventListener('change', function () { h.param(key, $(key).value); });
+      $(key).addEventListener('change', function () { h.param(key, fieldText($(key))); });
     });
     document.querySelectorAll('input[name=mode]').forEach(function (r) {
       r.addEventListener('change', function () { if (r.checked) h.mode(r.value); });
@@ -56,29 +79,44 @@ window.clothUI = (function () {
     document.querySelectorAll('input[name=scale]').forEach(function (r) {
       r.addEventListener('change', function () { if (r.checked) h.scaleMode(r.value); });
     });
-    el.fullScale.addEventListener('change', function () { h.fullScale(el.fullScale.value); });
+    el.fullScale.addEventListener('change', function () { h.fullScale(fieldText(el.fullScale)); });
     el.loadJson.addEventListener('click', function () {
       try { h.loadJson(el.json.value); } catch (e) { /* shown in the banner */ }
     });
     el.showJson.addEventListener('click', function () { el.json.value = h.currentJson(); });
 
+    // Shortcuts work wherever focus is, except where the key types text or works the
+    // focused control: a text field takes every key; a button, a summary or a link takes
+    // Space and Enter (Space opens the Scene JSON box); a radio group or a menu keeps its
+    // arrow keys. While the help is open it is modal: it takes the keys, Esc or H closes it.
     window.addEventListener('keydown', function (e) {
-      if (e.key === 'Escape') { ui.showHelp(false); return; }
-      const t = e.target;
-      if (e.ctrlKey || e.metaKey || e.altKey) return;
-      if (t && (t.tagName === 'INPUT' || t.tagName === 'TEXTAREA' || t.tagName === 'SELECT')) return;
       const k = e.key;
+      if (!el.helpBox.hidden) {
+        if (k === 'Escape' || k === 'h' || k === 'H' || k === '?') { ui.showHelp(false); e.preventDefault(); }
+        else if (k === 'Tab') trapFocus(e);
+        else if (k !== 'Enter' && !(k === ' ' && e.target === el.helpClose)) e.preventDefault();
+        return;
+      }
+      if (k === 'Escape') return;
+      if (e.ctrlKey || e.metaKey || e.altKey) return;
+      if (ownsKey(e.target, k)) return;
       let handled = true;
       if (k === ' ') h.pause();
       else if (k === 's' || k === 'S' || k === 'ArrowRight') h.step();
       else if (k === 'r' || k === 'R') h.reset();
       else if (k === 'c' || k === 'C') h.mode(null);
       else if (k === 'a' || k === 'A') h.scaleMode(null);
-      else if (k === 'h' || k === 'H' || k === '?') ui.showHelp(el.helpBox.hidden);
-      else if (PRESET_KEYS[k]) h.preset(PRESET_KEYS[k]);
+      else if (k === 'h' || k === 'H' || k === '?') ui.showHelp(true);
+      else if (Object.prototype.hasOwnProperty.call(PRESET_KEYS, k)) h.preset(PRESET_KEYS[k]);
       else handled = false;
       if (handled) e.preventDefault();
     });
+
+    function trapFocus(e) {
+      // The help has one focusable control: Tab stays on it.
+      e.preventDefault();
+      el.helpClose.focus();
+    }
 
     const ui = {
       setParams: function (p) {
@@ -93,17 +131,21 @@ window.clothUI = (function () {
       setMode: function (mode) {
         checkRadio('mode', mode);
         el.legend.classList.toggle('stress', mode === 'stress');
-        el.legendTitle.textContent = mode === 'stress' ? 'stress Q / scale' : 'strain |diff|';
+        legendName = mode === 'stress' ? 'node stress Q' : 'edge |diff|';
+        el.legendTitle.textContent = legendName;
       },
       setScale: function (scaleMode, fullScale) {
         checkRadio('scale', scaleMode);
         el.fullScale.value = String(fullScale);
         el.fullScale.disabled = scaleMode !== 'fixed';
       },
-      setLegend: function (scale, auto) {
+      // Ticks in the quantity the title names; the title says what the scale's top is:
+      // the frame's maximum, the auto floor, or the fixed full scale.
+      setLegend: function (scale, top) {
+        el.legendTitle.textContent = legendName + ' ' + LEGEND_TOP[top];
         el.legendLo.textContent = '0';
         el.legendMid.textContent = fmt(scale / 2, 4);
-        el.legendHi.textContent = fmt(scale, 4) + (auto ? ' (max)' : '');
+        el.legendHi.textContent = fmt(scale, 4);
       },
       setReadouts: function (r) {
         el.sim.textContent = fmt(r.simMs, 2);
@@ -125,7 +167,14 @@ window.clothUI = (function () {
       errorText: function () { return el.banner.hidden ? '' : el.bannerText.textContent; },
       noteText: function () { return el.note.hidden ? '' : el.note.textContent; },
       fatal: function (msg) { el.fatal.textContent = msg; el.fatal.hidden = !msg; },
-      showHelp: function (show) { el.helpBox.hidden = !show; if (show) el.helpClose.focus(); },
+      // The help is modal: focus goes into it, and back where it was when it closes.
+      showHelp: function (show) {
+        if (show === !el.helpBox.hidden) return;
+        if (show) helpReturn = document.activeElement;
+        el.helpBox.hidden = !show;
+        if (show) el.helpClose.focus();
+        else if (helpReturn && helpReturn.focus) { helpReturn.focus(); helpReturn = null; }
+      },
     };
     return ui;
   }

@@ -27,6 +27,9 @@ def app(browser):
     page.goto(DIST.as_uri())
     page.wait_for_function('() => !!(window.clothCore && window.clothApp)')
     page.evaluate('clothApp.setPaused(true)')
+    # Nothing a pointer or a key does may leave the page (a dropped file or text, a link).
+    page.on('framenavigated', lambda f: errors.append('navigated to ' + f.url) if f == page.main_frame else None)
+    page.on('crash', lambda p: errors.append('the page crashed'))
     cdp = context.new_cdp_session(page)
     cdp.send('HeapProfiler.enable')
     yield page, cdp, errors
