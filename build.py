@@ -30,6 +30,8 @@ DIST_HTML = os.path.join(ROOT, 'dist', 'index.html')
 # The hand-written page, in load order. Every webgl/*.js must be listed here.
 SCRIPTS = ['core.js', 'options.js', 'scenes.js', 'renderer.js', 'input.js', 'ui.js', 'app.js']
 STYLES = ['style.css']
+# GLSL, inlined as <script type="x-shader/x-vertex|fragment" id="shader-NAME"> for renderer.js.
+SHADERS = ['edge.vert', 'edge.frag', 'mark.vert', 'mark.frag']
 TEMPLATE = 'index.html'
 
 _IMPORT_NAMED = re.compile(r"^import\s*\{([^}]*)\}\s*from\s*'\./([^']+)\.js';?\s*$")
@@ -183,8 +185,17 @@ def page(core_js):
     present = {n for n in os.listdir(WEBGL) if n.endswith('.js')}
     if present != listed:
         raise BuildError('webgl/*.js and build.SCRIPTS differ: %s' % sorted(present ^ listed))
+    shader_dir = os.path.join(WEBGL, 'shaders')
+    present = set(os.listdir(shader_dir))
+    if present != set(SHADERS):
+        raise BuildError('webgl/shaders/ and build.SHADERS differ: %s' % sorted(present ^ set(SHADERS)))
     css = ''.join(_read(n) for n in STYLES)
-    blocks = ['<script>\n' + _inline_safe(core_js, 'core') + '</script>']
+    blocks = []
+    for name in SHADERS:
+        kind = 'x-shader/x-vertex' if name.endswith('.vert') else 'x-shader/x-fragment'
+        blocks.append('<script type="%s" id="shader-%s">\n%s</script>' % (
+            kind, name, _inline_safe(_read(os.path.join('shaders', name)), name)))
+    blocks.append('<script>\n' + _inline_safe(core_js, 'core') + '</script>')
     for name in SCRIPTS:
         blocks.append('<script>\n// ---- webgl/%s ----\n%s</script>' % (name, _inline_safe(_read(name), name)))
     html = _read(TEMPLATE)

@@ -249,6 +249,7 @@
     }
     const notes = [];
     if (note) notes.push(note);
+    if (ui.noteText().indexOf('slow motion') >= 0) notes.push(ui.noteText());   // load()'s warning
     if (dropped.length) {
       notes.push('outside the ' + p.cols + '×' + p.rows + ' grid, dropped: ' +
                  dropped.slice(0, 6).join(', ') + (dropped.length > 6 ? ', …' : ''));

@@ -4,8 +4,8 @@
 // its offset from the pointer until release (a press never snaps it to the
 // pointer, so a tap or a pin toggle moves nothing); each pointer holds its own
 // vertex, so two fingers can pull two corners. Through a resize of the view the
-// held vertex stays at the same place under the pointer. Right-click (or a pen's barrel button), Shift+click, or a double-tap
-// with a finger or pen toggles a pin.
+// held vertex stays at the same place under the pointer. Right-click (or a pen's
+// barrel button), Shift+click, or a double-tap with a finger or pen toggles a pin.
 // The canvas has CSS `touch-action: none`, otherwise the browser claims a touch
 // for scrolling and sends pointercancel on the first move.
 'use strict';

@@ -23,97 +23,17 @@ window.clothRenderer = (function () {
   const PIN_RADIUS_CSS = 4.5;
   const HELD_RADIUS_CSS = 8;
 
-  const EDGE_VS = [
-    'attribute vec2 a_corner;   // x: 0 at end a, 1 at end b; y: side, -1 or +1',
-    'attribute vec2 a_pa;',
-    'attribute vec2 a_pb;',
-    'attribute vec2 a_val;      // colour value at end a and end b',
-    'uniform vec2 u_scale;      // world metres -> device pixels (y flips)',
-    'uniform vec2 u_offset;',
-    'uniform vec2 u_viewport;   // device pixels',
-    'uniform mediump float u_halfWidth; // device pixels (precision shared with the fragment shader)',
-    'varying float v_val;',
-    'varying float v_side;',
-    'void main() {',
-    '  vec2 pa = a_pa * u_scale + u_offset;',
-    '  vec2 pb = a_pb * u_scale + u_offset;',
-    '  vec2 d = pb - pa;',
-    '  float len = length(d);',
-    '  vec2 dir = len > 1e-6 ? d / len : vec2(1.0, 0.0);',
-    '  vec2 nrm = vec2(-dir.y, dir.x);',
-    '  float reach = u_halfWidth + 1.0;  // one extra pixel for the antialiased rim',
-    '  vec2 p = mix(pa, pb, a_corner.x) + dir * (2.0 * a_corner.x - 1.0) * u_halfWidth',
-    '         + nrm * a_corner.y * reach;',
-    '  v_val = mix(a_val.x, a_val.y, a_corner.x);',
-    '  v_side = a_corner.y * reach;',
-    '  vec2 clip = p / u_viewport * 2.0 - 1.0;',
-    '  gl_Position = vec4(clip.x, -clip.y, 0.0, 1.0);',
-    '}',
-  ].join('\n');
 
-  const EDGE_FS = [
-    'precision mediump float;',
-    'uniform float u_mode;      // 0 strain, 1 stress',
-    'uniform float u_invScale;',
-    'uniform float u_halfWidth;',
-    'uniform float u_base;',
-    'varying float v_val;',
-    'varying float v_side;',
-    'void main() {',
-    '  float t = clamp(v_val * u_invScale, 0.0, 1.0);',
-    '  vec3 c = u_mode < 0.5 ? vec3(u_base + (1.0 - u_base) * t, 0.0, 0.0)',
-    '                        : mix(vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), t);',
-    '  float a = clamp(u_halfWidth + 0.5 - abs(v_side), 0.0, 1.0);',
-    '  gl_FragColor = vec4(c * a, a);  // premultiplied alpha',
-    '}',
-  ].join('\n');
 
-  const MARK_VS = [
-    'attribute vec2 a_corner;   // -1..1 square',
-    'attribute vec2 a_center;   // world metres',
-    'attribute float a_kind;    // 0 pinned, 1 held, 2 held and pinned',
-    'uniform vec2 u_scale;',
-    'uniform vec2 u_offset;',
-    'uniform vec2 u_viewport;',
-    'uniform float u_pinRadius;',
-    'uniform float u_heldRadius;',
-    'varying vec2 v_uv;',
-    'varying float v_kind;',
-    'varying float v_radius;',
-    'void main() {',
-    '  float r = (a_kind > 0.5 ? u_heldRadius : u_pinRadius) + 1.0;',
-    '  vec2 p = a_center * u_scale + u_offset + a_corner * r;',
-    '  v_uv = a_corner * r;',
-    '  v_kind = a_kind;',
-    '  v_radius = r - 1.0;',
-    '  vec2 clip = p / u_viewport * 2.0 - 1.0;',
-    '  gl_Position = vec4(clip.x, -clip.y, 0.0, 1.0);',
-    '}',
-  ].join('\n');
 
-  const MARK_FS = [
-    'precision mediump float;',
-    'uniform float u_px;        // device pixels per CSS pixel',
-    'varying vec2 v_uv;',
-    'varying float v_kind;',
-    'varying float v_radius;',
-    'void main() {',
-    '  float d = length(v_uv);',
-    '  float outer = clamp(v_radius + 0.5 - d, 0.0, 1.0);',
-    '  vec4 c;',
-    '  if (v_kind < 0.5) {',
-    '    // pinned: a light disc with a dark outline',
-    '    float inner = clamp(v_radius - 1.5 * u_px + 0.5 - d, 0.0, 1.0);',
-    '    c = mix(vec4(0.05, 0.06, 0.08, 1.0), vec4(0.92, 0.94, 0.97, 1.0), inner) * outer;',
-    '  } else {',
-    '    // held: an amber ring (filled centre when also pinned)',
-    '    float ring = clamp(v_radius - 2.0 * u_px + 0.5 - d, 0.0, 1.0);',
-    '    float fill = v_kind > 1.5 ? 1.0 : 1.0 - ring;',
-    '    c = vec4(1.0, 0.75, 0.2, 1.0) * outer * fill;',
-    '  }',
-    '  gl_FragColor = c;',
-    '}',
-  ].join('\n');
+
+  // The GLSL lives in webgl/shaders/*.vert|frag; build.py inlines each file as a
+  // <script type="x-shader/..." id="shader-NAME"> element, read here by name.
+  function shader(name) {
+    const el = document.getElementById('shader-' + name);
+    if (!el) throw new Error('shader ' + name + ' is missing from the page (rebuild with build.py)');
+    return el.textContent;
+  }
 
   function numbered(src) {
     return src.split('\n').map(function (l, i) { return (i + 1) + ': ' + l; }).join('\n');
@@ -205,8 +125,8 @@ window.clothRenderer = (function () {
           draw: function (mode, first, count, n) { ext.drawArraysInstancedANGLE(mode, first, count, n); },
         };
       }
-      edgeProg = program(gl, EDGE_VS, EDGE_FS, ['a_corner', 'a_pa', 'a_pb', 'a_val'], 'edge');
-      markProg = program(gl, MARK_VS, MARK_FS, ['a_corner', 'a_center', 'a_kind'], 'marker');
+      edgeProg = program(gl, shader('edge.vert'), shader('edge.frag'), ['a_corner', 'a_pa', 'a_pb', 'a_val'], 'edge');
+      markProg = program(gl, shader('mark.vert'), shader('mark.frag'), ['a_corner', 'a_center', 'a_kind'], 'marker');
       cornerBuf = gl.createBuffer();
       gl.bindBuffer(gl.ARRAY_BUFFER, cornerBuf);
       gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([0, -1, 0, 1, 1, -1, 1, 1]), gl.STATIC_DRAW);

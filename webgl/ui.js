@@ -32,6 +32,15 @@ window.clothUI = (function () {
     return false;
   }
 
+  // Hide an element. Hiding a focused element does not move focus at once (the browser fixes
+  // it up at its next rendering update), so a key pressed right after would still go to the
+  // hidden control (a Close button owns Space): blur what has focus inside it first.
+  function hide(box) {
+    const f = document.activeElement;
+    if (f && f !== document.body && box.contains(f) && f.blur) f.blur();
+    box.hidden = true;
+  }
+
   function fmt(v, digits) {
     if (!Number.isFinite(v)) return '–';
     if (v !== 0 && (Math.abs(v) < 0.001 || Math.abs(v) >= 1e4)) return v.toExponential(2);
@@ -163,7 +172,7 @@ window.clothUI = (function () {
         if (msg) noteTimer = setTimeout(function () { el.note.hidden = true; }, 6000);
       },
       error: function (msg) { el.bannerText.textContent = msg; el.banner.hidden = false; },
-      clearError: function () { el.banner.hidden = true; el.bannerText.textContent = ''; },
+      clearError: function () { hide(el.banner); el.bannerText.textContent = ''; },
       errorText: function () { return el.banner.hidden ? '' : el.bannerText.textContent; },
       noteText: function () { return el.note.hidden ? '' : el.note.textContent; },
       fatal: function (msg) { el.fatal.textContent = msg; el.fatal.hidden = !msg; },
@@ -171,9 +180,10 @@ window.clothUI = (function () {
       showHelp: function (show) {
         if (show === !el.helpBox.hidden) return;
         if (show) helpReturn = document.activeElement;
-        el.helpBox.hidden = !show;
-        if (show) el.helpClose.focus();
-        else if (helpReturn && helpReturn.focus) { helpReturn.focus(); helpReturn = null; }
+        if (show) { el.helpBox.hidden = false; el.helpClose.focus(); return; }
+        hide(el.helpBox);
+        if (helpReturn && helpReturn !== document.body && helpReturn.focus) helpReturn.focus();
+        helpReturn = null;
       },
     };
     return ui;

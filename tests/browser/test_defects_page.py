@@ -252,6 +252,27 @@ def test_the_help_is_modal(open_page):
     assert pg.locator('#help').is_hidden()
 
 
+def test_a_key_right_after_closing_an_overlay_is_a_shortcut(open_page):
+    # Hiding a focused control leaves focus on it until the browser's next rendering update:
+    # a Space pressed at once went to the hidden Close button and paused nothing. Each overlay
+    # closed from the keyboard, then a shortcut with no pause in between, many times over.
+    pg = open_page()
+    for _ in range(5):
+        pg.keyboard.press('h')
+        pg.keyboard.press('Escape')
+        paused = pg.info()['paused']
+        pg.keyboard.press('Space')
+        assert pg.info()['paused'] != paused
+    for _ in range(5):
+        pg.js("document.getElementById('banner-text').textContent = 'x';"
+              "document.getElementById('banner').hidden = false;"
+              "document.getElementById('banner-close').focus()")
+        paused = pg.info()['paused']
+        pg.keyboard.press('Enter')
+        pg.keyboard.press('Space')
+        assert pg.locator('#banner').is_hidden() and pg.info()['paused'] != paused
+
+
 def test_space_on_the_scene_json_summary_opens_it(open_page):
     pg = open_page()
     pg.locator('#json-box summary').focus()
