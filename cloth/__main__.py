@@ -1,4 +1,4 @@
-"""python -m cloth run SCENE.json --frames N [--trace]: print what `cloth.api.run` returns.
+"""python -m cloth run SCENE.json [--frames N] [--trace]: print what `cloth.api.run` returns.
 
 CPython only (never transpiled). Bad input exits with status 2 and one line naming the key.
 """
@@ -9,7 +9,7 @@ import shutil
 import sys
 import tempfile
 
-from cloth.api import run, start, simulate, result_of
+from cloth.api import run, load, start, frames_of, simulate, result_of
 from cloth.host import to_json
 from cloth.scene import SceneError
 
@@ -26,9 +26,15 @@ def main(argv=None):
     sub = parser.add_subparsers(dest='command', required=True)
     p_run = sub.add_parser('run', help='run SCENE.json for N frames and print the result JSON')
     p_run.add_argument('scene', help='path to a scene JSON file, or - for standard input')
-    p_run.add_argument('--frames', type=int, required=True, help='frames to simulate (>= 0)')
+    p_run.add_argument('--frames', type=int, default=None,
+                       help='frames to simulate (>= 0); default: the scene\'s "frames" key')
     p_run.add_argument('--trace', action='store_true', help='add the positions after every frame')
     args = parser.parse_args(argv)
+    if sys.stdout is None or (args.scene == '-' and sys.stdin is None):
+        # A closed stream (`>&-`, `<&-`): Python makes it None.
+        say('error: ' + ('output: standard output is closed' if sys.stdout is None else
+                         'scene: standard input is closed'))
+        return 2
     try:
         if args.scene == '-':
             data = sys.stdin.buffer.read()
@@ -52,15 +58,33 @@ def main(argv=None):
             stream_trace(text, args.frames, sys.stdout)
         else:
             sys.stdout.write(run(text, args.frames) + '\n')
+        sys.stdout.flush()
     except SceneError as err:
         sys.stderr.write('error: ' + str(err) + '\n')
         return 2
     except BrokenPipeError:
-        # The reader went away (`| head`): not an error of ours, and no traceback. Python
-        # would report the failed flush at exit again, so stdout goes to devnull first.
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        # The reader went away (`| head`): not an error of ours, and no traceback.
+        quiet_stdout()
+        return 1
+    except OSError as err:
+        # The output could not be written (a full disk, /dev/full): one line, no traceback.
+        quiet_stdout()
+        say('error: output: cannot write the result: ' + (err.strerror or str(err)))
         return 1
     return 0
+
+
+def quiet_stdout():
+    """Python would report the failed flush again at exit: stdout goes to devnull first."""
+    try:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    except OSError:
+        pass
+
+
+def say(line):
+    if sys.stderr is not None:
+        sys.stderr.write(line + '\n')
 
 
 class TraceFile:
@@ -81,7 +105,9 @@ class TraceFile:
 def stream_trace(text, frames, out):
     """The text `run(text, frames, True)` returns, character for character (the trace is
     its last key), written to `out` with the trace streamed through a temporary file."""
-    cloth = start(text, frames, True)
+    cloth = load(text)
+    frames = frames_of(cloth, frames)
+    start(cloth, frames, True)
     with tempfile.TemporaryFile('w+', encoding='utf-8') as spool:
         simulate(cloth, frames, TraceFile(spool))
         head = to_json(result_of(cloth, frames))

@@ -4,8 +4,8 @@
 returns, and the parity tests compare its CPython and browser results number for number.
 """
 
-from cloth.host import to_json, kind_of, is_finite
-from cloth.scene import parse_scene, SceneError, fail, MAX_FRAMES
+from cloth.host import to_json, kind_of, is_finite, parse_json
+from cloth.scene import parse_scene, settings_scene, SceneError, fail, MAX_FRAMES
 from cloth.sim import Cloth, frame, measure, grab, move, release, pin, unpin, retune
 
 # A trace holds frames x vertices points. The CLI streams it (cloth/__main__.py: memory
@@ -28,11 +28,24 @@ def build(scene):
     return Cloth(scene)
 
 
-def set_scene(cloth, scene_json_text):
-    """New settings for the running cloth (gravity, dt, substeps, iterations, solver,
-    damping, ...): a whole scene on the same grid, checked as `load` checks one. Positions,
-    velocities, pins and held vertices stay (sim.retune); a bad scene changes nothing."""
-    retune(cloth, parse_scene(scene_json_text))
+def set_settings(cloth, keys_json_text):
+    """New settings for the running cloth, as the JSON text of an object of scene keys (those
+    of scene.SETTABLE: gravity, substeps, iterations, solver, damping, ...): what a `set`
+    action does, and what the page does when a person changes a setting. Positions,
+    velocities, pins and held vertices stay (sim.retune); bad keys change nothing."""
+    parsed = parse_json(keys_json_text)
+    if parsed is None:
+        fail('scene: not valid JSON')
+    apply_settings(cloth, parsed[1], 'scene')
+
+
+def apply_settings(cloth, keys, where):
+    scene = settings_scene(cloth.scene.settings, keys, where)
+    # The grid's own keys and the script stay the cloth's: a set changes settings only.
+    scene.pins = cloth.scene.pins
+    scene.actions = cloth.scene.actions
+    scene.frames = cloth.scene.frames
+    retune(cloth, scene)
 
 
 def check_frames(frames):
@@ -58,6 +71,8 @@ def apply_action(cloth, action):
         pin(cloth, k)
     elif op == 'unpin':
         unpin(cloth, k)
+    elif op == 'set':
+        apply_settings(cloth, action.keys, 'scene')
 
 
 def positions_of(cloth):
@@ -76,19 +91,34 @@ def apply_due(cloth, next_action, f):
     return next_action
 
 
+def drop_actions_after(cloth, f):
+    """Forget the scene's actions after frame f (the page cuts a replayed recording so when a
+    person takes over at frame f)."""
+    actions = cloth.scene.actions
+    keep = 0
+    while keep < len(actions) and actions[keep].frame <= f:
+        keep += 1
+    cloth.scene.actions = actions[:keep]
+
+
 def simulate(cloth, frames, trace):
-    """Step `frames` frames, applying each action before the frame after its `frame`."""
-    next_action = 0
-    for f in range(frames):
-        next_action = apply_due(cloth, next_action, f)
+    """Step `frames` frames. The state at frame f is the state after f frames and the actions
+    of frame f: those of frame 0 come before the first frame, and those of the last frame
+    after it (a recording made in the page ends with what a person did at its last frame)."""
+    next_action = apply_due(cloth, 0, 0)
+    for f in range(1, frames + 1):
         frame(cloth)
+        next_action = apply_due(cloth, next_action, f)
         if trace is not None:
             trace.append(positions_of(cloth))
 
 
-def run(scene_json_text, frames, with_trace=False):
-    """Run a scene for `frames` frames; return the result as JSON text (see README)."""
-    cloth = start(scene_json_text, frames, with_trace)
+def run(scene_json_text, frames=None, with_trace=False):
+    """Run a scene for `frames` frames (None: the scene's own `frames`); return the result as
+    JSON text (see README)."""
+    cloth = load(scene_json_text)
+    frames = frames_of(cloth, frames)
+    start(cloth, frames, with_trace)
     trace = [] if with_trace else None
     simulate(cloth, frames, trace)
     result = result_of(cloth, frames)
@@ -97,13 +127,20 @@ def run(scene_json_text, frames, with_trace=False):
     return to_json(result)
 
 
-def start(scene_json_text, frames, with_trace):
-    """The checks of a run, before any work: the scene, the frames, the trace's size."""
-    cloth = load(scene_json_text)
+def frames_of(cloth, frames):
+    """The frames to run: those asked for, else the scene's `frames` key."""
+    if frames is None:
+        if cloth.scene.frames < 0:
+            fail('frames: missing: give the frames to run (--frames N), or a "frames" key in the scene')
+        return cloth.scene.frames
+    return frames
+
+
+def start(cloth, frames, with_trace):
+    """The checks of a run, before any work: the frames, the trace's size."""
     check_frames(frames)
     if with_trace and frames * cloth.n_verts > MAX_TRACE_POINTS:
         fail('frames: a trace of frames x vertices must be at most 20000000 points')
-    return cloth
 
 
 def result_of(cloth, frames):

@@ -154,6 +154,21 @@ def has_key(obj, key):
     return key in obj
 
 
+def code_units(text):
+    """The UTF-16 code units of a string, as JS sees it (a lone surrogate is one unit)."""
+    data = text.encode('utf-16-le', 'surrogatepass')
+    return [data[i] | (data[i + 1] << 8) for i in range(0, len(data), 2)]
+
+
+def copy_object(obj, skip, over):
+    """A new JSON object: obj's keys but those in `skip`, then the keys of `over` (or None)
+    written over them."""
+    out = {key: value for key, value in obj.items() if key not in skip}
+    if over is not None:
+        out.update(over)
+    return out
+
+
 def as_index(x):
     return int(x)
 # __pragma__ ('noskip')
@@ -235,6 +250,26 @@ def key_list(obj):
 
 def has_key(obj, key):
     return __pragma__ ('js', '{}', 'Object.prototype.hasOwnProperty.call (obj, key)')
+
+
+def code_units(text):
+    units = []
+    for i in range(text.length):
+        units.append(text.charCodeAt(i))
+    return units
+
+
+def copy_object(obj, skip, over):
+    # A plain JS object (a Transcrypt dict literal would carry its methods).
+    out = __pragma__ ('js', '{}', '{}')
+    __pragma__ ('js', '{}', """
+    for (const key of Object.keys (obj)) {
+        if (skip.indexOf (key) < 0) out [key] = obj [key];
+    }
+    if (over !== null && over !== undefined) {
+        for (const key of Object.keys (over)) out [key] = over [key];
+    }""")
+    return out
 
 
 def as_index(x):

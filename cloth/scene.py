@@ -8,7 +8,8 @@ CPython and JS would spell it differently.
 
 import math
 
-from cloth.host import too_deep, parse_json, kind_of, is_finite, key_list, has_key, as_index
+from cloth.host import too_deep, parse_json, kind_of, is_finite, key_list, has_key, as_index, \
+    copy_object, code_units
 
 # Limits. A grid larger than MAX_VERTICES would need hundreds of MB of state (and would not
 # run in real time anyway); the other bounds keep every parameter physically meaningful.
@@ -17,17 +18,25 @@ MAX_SUBSTEPS = 1000
 MAX_ITERATIONS = 10000
 MAX_FRAMES = 10000000
 MAX_ACTIONS = 100000
+MIN_DT = 1e-6
 # A scene nests 4 deep (scene, actions, an action, its `to`); deeper is not a scene.
 MAX_DEPTH = 32
 
 SOLVERS = ['jakobsen', 'xpbd']
 DEFAULT_SOLVER = 'xpbd'
-OPS = ['grab', 'move', 'release', 'pin', 'unpin']
+OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set']
 
 SCENE_KEYS = ['cols', 'rows', 'spacing', 'pins', 'gravity', 'dt', 'substeps', 'iterations',
               'damping', 'solver', 'actions', 'tethers', 'shear', 'compliance', 'tolerance',
-              'max_speed', 'sleep', 'cells', 'lines', 'name']
-ACTION_KEYS = ['frame', 'op', 'vertex', 'to']
+              'max_speed', 'sleep', 'cells', 'lines', 'name', 'frames']
+ACTION_KEYS = ['frame', 'op', 'vertex', 'to', 'scene']
+# The keys a `set` action may change on the running cloth: everything but what makes the grid
+# (cols, rows, spacing, shear, pins) and what is not physics (actions, frames, name).
+SETTABLE = ['gravity', 'dt', 'substeps', 'iterations', 'damping', 'solver', 'tethers',
+            'compliance', 'tolerance', 'max_speed', 'sleep', 'cells', 'lines']
+# What the settings of a `set` are merged into: the scene's own keys but these, which a set
+# can neither change nor needs (actions would be parsed again at every set).
+NOT_SETTINGS = ['actions', 'pins', 'frames', 'name']
 
 
 class SceneError(Exception):
@@ -37,6 +46,27 @@ class SceneError(Exception):
 
 def fail(message):
     raise SceneError(message)
+
+
+HEX = '0123456789abcdef'
+SHOWN_UNITS = 40
+
+
+def shown(text):
+    """A key from the input, fit for a one-line message that both runtimes write alike: at
+    most SHOWN_UNITS characters, anything but printable ASCII as a \\uXXXX escape of its
+    UTF-16 code unit (a newline would break the line, a lone surrogate prints differently)."""
+    units = code_units(text)
+    out = []
+    for i in range(min(len(units), SHOWN_UNITS)):
+        u = units[i]
+        if u >= 32 and u < 127 and u != 92:
+            out.append(chr(u))
+        else:
+            out.append('\\u' + HEX[(u >> 12) & 15] + HEX[(u >> 8) & 15] + HEX[(u >> 4) & 15] + HEX[u & 15])
+    if len(units) > SHOWN_UNITS:
+        out.append('...')
+    return ''.join(out)
 
 
 # Each solver's defaults for the keys a scene may omit. "jakobsen" is the seed's method
@@ -74,16 +104,23 @@ class Scene:
         self.cells = False
         self.lines = False
         self.actions = []      # list of Action, sorted by frame (stable)
+        self.frames = -1       # the frames a recording ran for; -1: not given
+        # The scene's JSON object without NOT_SETTINGS: what a `set` action merges its keys
+        # into, so that a set means "this scene with these keys written into it" (solver
+        # defaults included: a scene that omits `tethers` and is set to "jakobsen" gets
+        # the seed's default, as if it had been written so).
+        self.settings = None
 
 
 class Action:
-    def __init__(self, frame, op, vertex, has_to, to_x, to_y):
+    def __init__(self, frame, op, vertex, has_to, to_x, to_y, keys):
         self.frame = frame
         self.op = op
         self.vertex = vertex
         self.has_to = has_to
         self.to_x = to_x
         self.to_y = to_y
+        self.keys = keys       # `set`: the scene keys it sets (a JSON object); else None
 
 
 def number(value, key, lo, hi, lo_open, what):
@@ -136,7 +173,7 @@ def scene_from_object(obj):
         fail('scene: must be a JSON object')
     for key in key_list(obj):
         if not known(SCENE_KEYS, key):
-            fail(key + ': unknown key (known: ' + ', '.join(SCENE_KEYS) + ')')
+            fail(shown(key) + ': unknown key (known: ' + ', '.join(SCENE_KEYS) + ')')
     s = Scene()
     if not has_key(obj, 'cols'):
         fail('cols: missing (an integer >= 1)')
@@ -179,7 +216,9 @@ def scene_from_object(obj):
         s.gravity_x = number(g[0], 'gravity', -1e5, 1e5, False, 'at most 1e5 m/s^2 per axis')
         s.gravity_y = number(g[1], 'gravity', -1e5, 1e5, False, 'at most 1e5 m/s^2 per axis')
     if has_key(obj, 'dt'):
-        s.dt = number(obj['dt'], 'dt', 0.0, 1.0, True, 'in (0, 1] seconds')
+        # Not down to 0: a step's h^2 must stay a normal double (dt 1e-300 made it 0, and
+        # compliance / h^2 a division by zero); a microsecond is far below any frame.
+        s.dt = number(obj['dt'], 'dt', MIN_DT, 1.0, False, 'from 0.000001 to 1 seconds')
     if has_key(obj, 'substeps'):
         s.substeps = integer(obj['substeps'], 'substeps', 1, MAX_SUBSTEPS,
                              'an integer from 1 to 1000')
@@ -211,9 +250,30 @@ def scene_from_object(obj):
     if has_key(obj, 'name'):
         if kind_of(obj['name']) != 'string':
             fail('name: must be a string')
+    if has_key(obj, 'frames'):
+        s.frames = integer(obj['frames'], 'frames', 0, MAX_FRAMES,
+                           'an integer from 0 to 10000000 (the frames the scene was recorded for)')
+    s.settings = copy_object(obj, NOT_SETTINGS, None)
     if has_key(obj, 'actions'):
-        s.actions = parse_actions(obj['actions'], n)
+        s.actions = parse_actions(obj['actions'], n, s.settings)
     return s
+
+
+def settings_scene(settings, keys, where):
+    """The Scene that `settings` (a scene's JSON object without NOT_SETTINGS) with `keys`
+    written into it makes: what a `set` action or a live change in the page turns the running
+    cloth's settings into. Errors name the key with `where` before it."""
+    if kind_of(keys) != 'object':
+        fail(where + ': must be an object of scene keys (' + ', '.join(SETTABLE) + ')')
+    names = key_list(keys)
+    for i in range(len(names)):
+        if not known(SETTABLE, names[i]):
+            fail(where + '.' + shown(names[i]) + ': cannot be set on a running cloth (settable: ' +
+                 ', '.join(SETTABLE) + ')')
+    try:
+        return scene_from_object(copy_object(settings, [], keys))
+    except SceneError as err:
+        fail(where + '.' + str(err))
 
 
 def known(names, key):
@@ -223,7 +283,7 @@ def known(names, key):
     return False
 
 
-def parse_actions(actions, n):
+def parse_actions(actions, n, settings):
     if kind_of(actions) != 'list':
         fail('actions: must be a list of {"frame", "op", "vertex", "to"} objects')
     if len(actions) > MAX_ACTIONS:
@@ -236,8 +296,8 @@ def parse_actions(actions, n):
             fail(where + ': must be an object with frame, op, vertex and optional to')
         for key in key_list(a):
             if not known(ACTION_KEYS, key):
-                fail(where + '.' + key + ': unknown key (known: frame, op, vertex, to)')
-        for key in ['frame', 'op', 'vertex']:
+                fail(where + '.' + shown(key) + ': unknown key (known: ' + ', '.join(ACTION_KEYS) + ')')
+        for key in ['frame', 'op']:
             if not has_key(a, key):
                 fail(where + '.' + key + ': missing')
         frame = integer(a['frame'], where + '.frame', 0, MAX_FRAMES,
@@ -245,6 +305,21 @@ def parse_actions(actions, n):
         op = a['op']
         if kind_of(op) != 'string' or not known(OPS, op):
             fail(where + '.op: must be one of ' + ', '.join(OPS))
+        if op == 'set':
+            # {"frame": f, "op": "set", "scene": {key: value, ...}}: settings changed on the
+            # running cloth at frame f (the page records a person's live changes so).
+            for key in ['vertex', 'to']:
+                if has_key(a, key):
+                    fail(where + '.' + key + ': a set takes no ' + key)
+            if not has_key(a, 'scene'):
+                fail(where + '.scene: missing (set needs the scene keys it sets)')
+            settings_scene(settings, a['scene'], where + '.scene')
+            parsed.append(Action(frame, op, -1, False, 0.0, 0.0, a['scene']))
+            continue
+        if has_key(a, 'scene'):
+            fail(where + '.scene: only set takes scene keys')
+        if not has_key(a, 'vertex'):
+            fail(where + '.vertex: missing')
         vertex = integer(a['vertex'], where + '.vertex', 0, n - 1,
                          'a vertex index from 0 to cols * rows - 1')
         has_to = has_key(a, 'to')
@@ -255,7 +330,7 @@ def parse_actions(actions, n):
             to = point(a['to'], where + '.to')
         elif op == 'move':
             fail(where + '.to: missing (move needs a target [x, y])')
-        parsed.append(Action(frame, op, vertex, has_to, to[0], to[1]))
+        parsed.append(Action(frame, op, vertex, has_to, to[0], to[1], None))
     return check_holds(stable_sort_by_frame(parsed))
 
 

@@ -72,8 +72,11 @@ def test_grab_without_target_holds_in_place(solver):
 def test_grab_move_release_a_free_vertex(solver):
     actions = [{'frame': 0, 'op': 'grab', 'vertex': 7, 'to': [0.3, -1.2]},
                {'frame': 10, 'op': 'move', 'vertex': 7, 'to': [0.6, -1.5]}]
-    out = result(curtain(3, solver=solver, actions=actions), 10)
+    out = result(curtain(3, solver=solver, actions=actions), 9)
     assert out['positions'][7] == [0.3, -1.2]
+    # the state at frame 10 holds what was done at frame 10
+    out = result(curtain(3, solver=solver, actions=actions), 10)
+    assert out['positions'][7] == [0.6, -1.5]
     out = result(curtain(3, solver=solver, actions=actions), 30)
     assert out['positions'][7] == [0.6, -1.5]
     released = actions + [{'frame': 30, 'op': 'release', 'vertex': 7}]

@@ -12,7 +12,7 @@ import time
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from cloth.api import load, run, set_scene, simulate, start
+from cloth.api import load, run, set_settings
 from cloth.scene import SceneError, MAX_DEPTH, parse_scene, stable_sort_by_frame
 from cloth.sim import frame, grab, pin
 from cloth.host import too_deep
@@ -184,7 +184,7 @@ def test_a_setting_applies_to_the_running_cloth_and_keeps_its_state(change):
     cloth = running(scene)
     pos = list(cloth.pos)
     pinned, held = list(cloth.pinned), list(cloth.held)
-    set_scene(cloth, json.dumps(dict(scene, **change)))
+    set_settings(cloth, json.dumps(change))
     assert list(cloth.pos) == pos and list(cloth.pinned) == pinned and list(cloth.held) == held
     for key, value in change.items():
         got = getattr(cloth.scene, key if key != 'gravity' else 'gravity_y')
@@ -204,7 +204,7 @@ def test_changing_substeps_keeps_the_velocity():
     frame(cloth)
     per_frame = cloth.pos[0] - x0
     for substeps in (7, 1, 16):
-        set_scene(cloth, json.dumps(dict(scene, substeps=substeps)))
+        set_settings(cloth, json.dumps({'substeps': substeps}))
         x1 = cloth.pos[0]
         frame(cloth)
         assert cloth.pos[0] - x1 == pytest.approx(per_frame, rel=1e-9), substeps
@@ -214,7 +214,54 @@ def test_a_grid_change_is_refused_and_changes_nothing():
     cloth = running(GOOD)
     pos = list(cloth.pos)
     for change in [{'cols': 5}, {'spacing': 0.2}, {'shear': True}, {'iterations': -1},
-                   {'solver': 'magic'}]:
+                   {'solver': 'magic'}, {'pins': [1]}, {'actions': []}, {'frames': 3}]:
         with pytest.raises(SceneError):
-            set_scene(cloth, json.dumps(dict(GOOD, **change)))
+            set_settings(cloth, json.dumps(change))
         assert list(cloth.pos) == pos and cloth.scene.iterations == 1
+
+
+# ---- found when the fixes of #12 were tried as a new user would ---------------------------------
+
+@pytest.mark.parametrize('dt', [1e-300, 1e-155, 1e-7, 0, -1])
+def test_a_step_too_small_to_square_is_refused(dt):
+    """dt 1e-300 passed validation, made h^2 zero and compliance / h^2 a ZeroDivisionError in
+    CPython (a traceback from the CLI) and NaN everywhere in the page."""
+    with pytest.raises(SceneError, match=r'^dt: must be from 0\.000001 to 1 seconds'):
+        run(json.dumps(dict(GOOD, dt=dt)), 3)
+    out = json.loads(run(json.dumps(dict(GOOD, dt=1e-6, substeps=1000)), 2))
+    assert all(v == v for p in out['positions'] for v in p)
+
+
+@pytest.mark.parametrize('key, shown', [
+    ('a\nb', 'a\\u000ab'), ('x' * 5000, 'x' * 40 + '...'), ('\ud800', '\\ud800'),
+    ('caf\u00e9', 'caf\\u00e9'), ('\U0001F600', '\\ud83d\\ude00'), ('back\\slash', 'back\\u005cslash'),
+])
+def test_an_unknown_key_is_shown_on_one_short_line(key, shown):
+    """A key is echoed escaped and cut short: a newline made a two-line error, a 2 MB key a
+    2 MB line, and a lone surrogate printed differently in the two runtimes."""
+    for text, prefix in [(json.dumps({**GOOD, key: 1}), ''),
+                         (json.dumps({**GOOD, 'actions': [{'frame': 0, 'op': 'pin', 'vertex': 1, key: 1}]}),
+                          'actions[0].'),
+                         (json.dumps({**GOOD, 'actions': [{'frame': 0, 'op': 'set', 'scene': {key: 1}}]}),
+                          'actions[0].scene.')]:
+        with pytest.raises(SceneError) as err:
+            run(text, 1)
+        message = str(err.value)
+        assert message.startswith(prefix + shown + ': '), message
+        assert '\n' not in message and len(message) < 400 and message.isascii()
+
+
+def test_the_cli_says_in_one_line_when_it_cannot_write(tmp_path):
+    path = tmp_path / 's.json'
+    path.write_text(json.dumps(GOOD))
+    for redirect in ['>&-', '> /dev/full', '--trace > /dev/full']:
+        trace = '--trace' if redirect.startswith('--trace') else ''
+        out = redirect.replace('--trace ', '')
+        done = subprocess.run('%s -m cloth run %s --frames 2 %s %s' % (sys.executable, path, trace, out),
+                              shell=True, cwd=ROOT, capture_output=True, text=True, timeout=120)
+        lines = done.stderr.strip().splitlines()
+        assert done.returncode in (1, 2) and len(lines) == 1, (redirect, done.stderr)
+        assert lines[0].startswith('error: output:') and 'Traceback' not in done.stderr
+    done = subprocess.run('%s -m cloth run - --frames 2 <&-' % sys.executable, shell=True, cwd=ROOT,
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 2 and done.stderr.strip() == 'error: scene: standard input is closed'

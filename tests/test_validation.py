@@ -148,7 +148,7 @@ def test_cli_prints_exactly_what_run_returns(tmp_path):
     (['run', '-', '--frames', '5'], '{oops', 'scene:'),
     (['run', '/no/such/scene.json', '--frames', '5'], None, 'scene:'),
     (['run', '-', '--frames', 'x'], json.dumps(GOOD), 'argument --frames'),
-    (['run', '-'], json.dumps(GOOD), 'the following arguments are required: --frames'),
+    (['run', '-'], json.dumps(GOOD), 'frames: missing'),
     (['jump'], None, 'argument command'),
 ])
 def test_cli_bad_input_is_one_line_and_nonzero(args, stdin, key):

@@ -1,0 +1,169 @@
+"""What a recording needs from the core (issue #13), in CPython: the `frames` key, the `set`
+action (settings changed on the running cloth at a frame), and the state at frame F holding
+what was done at frame F. The page's side is in tests/browser/test_recording_page.py."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from cloth.api import load, run, set_settings, simulate
+from cloth.scene import SceneError
+from cloth.sim import frame, grab, move
+
+ROOT = Path(__file__).resolve().parent.parent
+GOOD = {'cols': 4, 'rows': 3, 'spacing': 0.1, 'pins': [0, 3], 'damping': 1}
+
+
+def text(**keys):
+    s = dict(GOOD)
+    s.update(keys)
+    return json.dumps(s)
+
+
+def cli(*args, stdin=None):
+    return subprocess.run([sys.executable, '-m', 'cloth', *args], cwd=ROOT, input=stdin,
+                          capture_output=True)
+
+
+# ---- frames -----------------------------------------------------------------------------------
+
+def test_frames_key_is_the_default_run_length():
+    assert run(text(frames=25)) == run(text(frames=25), 25) == run(text(), 25)
+    assert json.loads(run(text(frames=0)))['frames'] == 0
+
+
+def test_frames_argument_wins_over_the_key():
+    assert run(text(frames=25), 7) == run(text(), 7)
+
+
+def test_frames_from_neither_is_an_error_naming_frames():
+    with pytest.raises(SceneError, match='^frames: missing'):
+        run(text())
+
+
+@pytest.mark.parametrize('value', [-1, 1.5, '3', None, True, 1e8, [3]])
+def test_a_bad_frames_key_names_frames(value):
+    with pytest.raises(SceneError, match='^frames: must be'):
+        run(text(frames=value), 3)
+
+
+def test_cli_runs_the_scenes_frames_and_frames_wins(tmp_path):
+    path = tmp_path / 'rec.json'
+    path.write_text(text(frames=12))
+    own = cli('run', str(path))
+    assert own.returncode == 0 and json.loads(own.stdout)['frames'] == 12
+    assert own.stdout.decode().strip() == run(text(frames=12))
+    given = cli('run', str(path), '--frames', '4')
+    assert json.loads(given.stdout)['frames'] == 4
+    path.write_text(text())
+    neither = cli('run', str(path))
+    assert neither.returncode == 2 and neither.stderr.decode().startswith('error: frames: missing')
+
+
+# ---- the state at frame F holds what was done at frame F ---------------------------------------
+
+def test_actions_of_the_last_frame_apply_after_it():
+    """A recording ends with what a person did at its last frame: a grab and a move made while
+    the page was paused at frame 10 are in the state of frame 10."""
+    acts = [{'frame': 10, 'op': 'grab', 'vertex': 5, 'to': [0.3, 0.2]},
+            {'frame': 10, 'op': 'move', 'vertex': 5, 'to': [0.35, 0.25]}]
+    out = json.loads(run(text(actions=acts), 10))
+    assert out['positions'][5] == [0.35, 0.25]
+    # ... and the frames before are not touched by them
+    assert json.loads(run(text(actions=acts), 9))['positions'] == json.loads(run(text(), 9))['positions']
+
+
+def test_the_step_loop_of_the_page_is_the_run():
+    """The page applies what is due at frame f right after frame f (and frame 0's at load),
+    then a person's gestures: the same sequence as `simulate`."""
+    acts = [{'frame': 0, 'op': 'grab', 'vertex': 7, 'to': [0.2, -0.3]},
+            {'frame': 4, 'op': 'move', 'vertex': 7, 'to': [0.25, -0.35]},
+            {'frame': 9, 'op': 'release', 'vertex': 7}]
+    ran = load(text(actions=acts))
+    simulate(ran, 15, None)
+    by_hand = load(text())
+    grab(by_hand, 7, 0.2, -0.3)
+    for f in range(1, 16):
+        frame(by_hand)
+        if f == 4:
+            move(by_hand, 7, 0.25, -0.35)
+        if f == 9:
+            by_hand.release(7)
+    assert list(ran.pos) == list(by_hand.pos)
+
+
+# ---- set --------------------------------------------------------------------------------------
+
+CHANGES = [{'gravity': [0, -3]}, {'iterations': 7}, {'substeps': 3}, {'solver': 'jakobsen'},
+           {'damping': 4}, {'tethers': False}, {'sleep': False}, {'tolerance': 0},
+           {'dt': 0.01}, {'compliance': 1e-6, 'lines': False}, {'max_speed': 50},
+           {'solver': 'jakobsen', 'substeps': 2, 'iterations': 30}, {}]
+
+
+@pytest.mark.parametrize('change', CHANGES)
+def test_a_set_action_is_a_live_change_at_its_frame(change):
+    """A set at frame 12 gives, bit for bit, what a person changing the setting at frame 12 of
+    the running cloth gets (the page records its changes so)."""
+    acts = [{'frame': 3, 'op': 'grab', 'vertex': 6, 'to': [0.15, -0.05]},
+            {'frame': 12, 'op': 'set', 'scene': change},
+            {'frame': 20, 'op': 'release', 'vertex': 6}]
+    recorded = json.loads(run(text(actions=acts), 40))
+    live = load(text(actions=[a for a in acts if a['op'] != 'set']))
+    simulate(live, 12, None)
+    set_settings(live, json.dumps(change))
+    for f in range(13, 41):
+        frame(live)
+        if f == 20:
+            live.release(6)
+    assert recorded['positions'] == [[live.pos[2 * k], live.pos[2 * k + 1]] for k in range(12)]
+
+
+def test_a_set_is_the_scene_with_those_keys_written_into_it():
+    """Settings a scene left to its solver's defaults follow the solver a set chooses."""
+    cloth = load(text(actions=[{'frame': 0, 'op': 'set', 'scene': {'solver': 'jakobsen'}}]))
+    simulate(cloth, 0, None)
+    assert (cloth.substeps, cloth.iterations, cloth.use_tethers) == (1, 20, False)
+    assert cloth.scene.pins == [0, 3]          # the grid's own keys stay
+    # a key the scene gave itself stays given
+    cloth = load(text(substeps=5, actions=[{'frame': 0, 'op': 'set', 'scene': {'solver': 'jakobsen'}}]))
+    simulate(cloth, 0, None)
+    assert cloth.substeps == 5
+    # sets accumulate
+    acts = [{'frame': 0, 'op': 'set', 'scene': {'damping': 3}},
+            {'frame': 1, 'op': 'set', 'scene': {'iterations': 4}}]
+    cloth = load(text(actions=acts))
+    simulate(cloth, 1, None)
+    assert (cloth.scene.damping, cloth.iterations) == (3, 4)
+
+
+@pytest.mark.parametrize('act, message', [
+    ({'frame': 1, 'op': 'set'}, r'^actions\[0\]\.scene: missing'),
+    ({'frame': 1, 'op': 'set', 'scene': 3}, r'^actions\[0\]\.scene: must be an object'),
+    ({'frame': 1, 'op': 'set', 'scene': {'cols': 5}}, r'^actions\[0\]\.scene\.cols: cannot be set'),
+    ({'frame': 1, 'op': 'set', 'scene': {'pins': []}}, r'^actions\[0\]\.scene\.pins: cannot be set'),
+    ({'frame': 1, 'op': 'set', 'scene': {'frames': 3}}, r'^actions\[0\]\.scene\.frames: cannot'),
+    ({'frame': 1, 'op': 'set', 'scene': {'bogus': 3}}, r'^actions\[0\]\.scene\.bogus: cannot'),
+    ({'frame': 1, 'op': 'set', 'scene': {'substeps': 0}}, r'^actions\[0\]\.scene\.substeps: must be'),
+    ({'frame': 1, 'op': 'set', 'scene': {'solver': 'magic'}}, r'^actions\[0\]\.scene\.solver: must be'),
+    ({'frame': 1, 'op': 'set', 'scene': {'gravity': [0]}}, r'^actions\[0\]\.scene\.gravity: must be'),
+    ({'frame': 1, 'op': 'set', 'vertex': 2, 'scene': {}}, r'^actions\[0\]\.vertex: a set takes no'),
+    ({'frame': 1, 'op': 'set', 'to': [0, 0], 'scene': {}}, r'^actions\[0\]\.to: a set takes no'),
+    ({'frame': 1, 'op': 'pin', 'vertex': 2, 'scene': {}}, r'^actions\[0\]\.scene: only set'),
+    ({'frame': 1, 'op': 'pin'}, r'^actions\[0\]\.vertex: missing'),
+])
+def test_set_errors_name_the_key(act, message):
+    with pytest.raises(SceneError, match=message):
+        run(text(actions=[act]), 2)
+
+
+def test_set_settings_refuses_bad_keys_and_changes_nothing():
+    cloth = load(text())
+    simulate(cloth, 5, None)
+    pos = list(cloth.pos)
+    for bad in ['{"substeps": 0}', '{"cols": 2}', '[1]', 'nope']:
+        with pytest.raises(SceneError):
+            set_settings(cloth, bad)
+        assert list(cloth.pos) == pos and cloth.substeps == 8
