@@ -7,6 +7,16 @@
 // frames run per animation frame, and no more once FRAME_BUDGET_MS is spent (the
 // rest of a backlog is dropped: a slow scene runs in slow motion and says so,
 // instead of spiralling or making input wait for a burst of catch-up frames).
+//
+// Frames and actions: the state at frame f is the state after f frames and the actions of
+// frame f (cloth/api.py simulate). The scene's own actions of frame f are applied as frame f
+// ends (those of frame 0 at load), and a person's gestures between frame f and f + 1 are
+// applied when they happen and recorded at frame f (recorder.js), so that the recording,
+// run by the CLI, is what the page showed.
+//
+// Replay: a scene that says how many frames it was recorded for (`frames`) plays up to
+// that frame and stops there, paused. A person who takes over before the end (a gesture, a
+// setting) cuts the script at that frame and is recorded from there on.
 'use strict';
 
 (function () {
@@ -29,7 +39,12 @@
     paused: false, acc: 0, last: -1, frames: 0, nextAction: 0, renders: 0, dirty: true, needMeasure: true,
     simMs: NaN, renderMs: NaN, fps: NaN, lastReadout: 0, scale: 0,
     wanted: 0, played: 0, speed: 1,   // seconds of wall clock and of simulation since the last readout
+    replayEnd: -1,      // the frame a replay stops at, or -1 when none is playing
+    replayEnded: false, // a replay stopped at its end and nothing has happened since
+    pinEdits: {},       // vertex -> pinned: the pins a person set (true) or removed (false)
   };
+  const recorder = window.clothRecorder.create();
+  const share = window.clothShare;
 
   const ui = window.clothUI.create({
     pause: function () { setPaused(!s.paused); },
@@ -43,6 +58,10 @@
     fullScale: function (raw) { setFullScale(raw); },
     loadJson: function (text) { loadScene(text); },
     currentJson: function () { return JSON.stringify(s.sceneObj, null, 1); },
+    replay: function () { replay(); },
+    exportFile: function () { exportRecording(); },
+    copyLink: function () { copyLink(); },
+    openFile: function (file) { openFile(file); },
   });
 
   const renderer = window.clothRenderer.create(canvas, {
@@ -63,18 +82,18 @@
   // allocation per call in the hot loop).
   function bind(cloth) { return core.ops(cloth); }
 
-  function paramsFrom(obj, cloth) {
-    function pick(key) { return obj[key] !== undefined ? obj[key] : cloth[key]; }
-    const g = Array.isArray(obj.gravity) ? obj.gravity[1] : undefined;
-    return { cols: cloth.cols, rows: cloth.rows, iterations: pick('iterations'),
-             substeps: pick('substeps'), gravity: g !== undefined ? g : -9.81,
-             damping: cloth.scene.damping,
-             solver: obj.solver || (cloth.use_xpbd ? 'xpbd' : 'jakobsen') };
+  // The settings the panel shows, as the cloth has them now.
+  function paramsOf(cloth) {
+    return { cols: cloth.cols, rows: cloth.rows, iterations: cloth.iterations,
+             substeps: cloth.substeps, gravity: cloth.scene.gravity_y,
+             damping: cloth.scene.damping, solver: cloth.scene.solver };
   }
 
   // Load scene JSON text. On a bad scene: show the message, keep the old scene
   // running, and throw an Error with the core's message.
-  function load(text, preset, view) {
+  // holds: [{id, k}] pointers that go on holding vertex k of the new cloth (a grid change);
+  // any other pointer lets go.
+  function load(text, preset, view, holds) {
     let cloth, obj;
     try {
       // The core checks the scene (its messages, as in the CLI); then the page's limits,
@@ -90,24 +109,32 @@
       throw new Error(msg);
     }
     ui.clearError();
-    input.releaseAll();
+    input.releaseAll(holds || []);
     s.cloth = cloth;
+    s.pinEdits = {};
     s.m = bind(cloth);
     s.clamped = 0;
     s.sceneText = text;
     s.sceneObj = obj;
     s.preset = preset;
     s.view = view || scenes.viewFor(obj);
-    s.params = paramsFrom(obj, cloth);
     s.frames = 0;
-    s.nextAction = 0;
     s.acc = 0;
+    recorder.start(obj, window.clothRecorder.scriptOf(cloth), cloth.n_verts);
+    s.replayEnd = typeof obj.frames === 'number' ? obj.frames : -1;
+    s.replayEnded = false;
+    s.nextAction = 0;
+    script(0);              // the scene's own actions of frame 0 come before any frame
+    s.params = paramsOf(cloth);
     s.simMs = NaN;            // timings and speed are the new scene's own
     s.wanted = 0; s.played = 0; s.speed = 1;
     if (renderer.ok) {
       renderer.setScene(cloth);
       renderer.setView(s.view);
     }
+    // The pointers that kept a vertex hold it again, where it now is, keeping on with their
+    // pointer from here (recorded as grabs, at frame 0 of the new recording).
+    input.regrab();
     s.m.measure();
     s.needMeasure = false;
     s.dirty = true;
@@ -120,7 +147,106 @@
       ui.note('This scene needs about ' + work.toExponential(1) + ' edge updates a frame: ' +
               'expect slow motion on an ordinary machine');
     }
+    if (s.replayEnd === 0) endReplay();
+    else if (s.replayEnd > 0) setPaused(false);
     return cloth;
+  }
+
+  // The scene's own actions due at frame f (cloth/api.py apply_due, the CLI's loop). A
+  // scripted grab takes its vertex from a pointer that held it (the script moves it now,
+  // and the pointer's release must not let go of the script's hold).
+  function script(f) {
+    const actions = s.cloth.scene.actions;
+    if (s.nextAction >= actions.length || actions[s.nextAction].frame > f) return;
+    const from = s.nextAction;
+    s.nextAction = core.applyDue(s.cloth, s.nextAction, f);
+    let settings = false;
+    for (let i = from; i < s.nextAction; i++) {
+      if (actions[i].op === 'grab') input.forget(actions[i].vertex);
+      else if (actions[i].op === 'set') settings = true;
+    }
+    if (settings) { s.params = paramsOf(s.cloth); ui.setParams(s.params); ui.setSolver(s.params.solver); }
+    s.needMeasure = true;
+    s.dirty = true;
+  }
+
+  // ---- replay, recording, sharing ---------------------------------------------
+
+  function endReplay() {
+    s.replayEnd = -1;
+    s.replayEnded = true;
+    setPaused(true);
+  }
+
+  // A person acts (a gesture, a setting): a replay still playing is cut at this frame, the
+  // script's holds are let go, and the recording goes on from here; a replay that ended
+  // starts running again.
+  function takeOver() {
+    if (s.replayEnd >= 0) {
+      s.replayEnd = -1;
+      core.dropActionsAfter(s.cloth, s.frames);
+      recorder.cut(s.frames);
+      const c = s.cloth;
+      for (let k = 0; k < c.n_verts; k++) {
+        if (c.held[k] !== 0 && !input.holds(k)) { s.m.release(k); recorder.release(s.frames, k); }
+      }
+      s.dirty = true;
+    }
+    if (s.replayEnded) { s.replayEnded = false; setPaused(false); }
+  }
+
+  function recordingText() {
+    return JSON.stringify(recorder.scene(recorder.complete(s.frames)));
+  }
+
+  function recordingName() {
+    return 'cloth-' + (s.preset || 'scene') + '-' + recorder.complete(s.frames) + 'f.json';
+  }
+
+  // Restart the recording from frame 0 at real speed.
+  function replay() {
+    const text = recordingText();
+    load(text, s.preset === 'custom' ? 'custom' : s.preset, s.view);
+    ui.note('Replaying ' + s.replayEnd + ' frames; a gesture takes over');
+  }
+
+  function exportRecording() {
+    const text = recordingText();
+    share.download(text, recordingName());
+    share.copy(text).then(function () {
+      ui.note('Recording saved as ' + recordingName() + ' and copied');
+    }, function () {
+      ui.note('Recording saved as ' + recordingName() + ' (the browser kept the clipboard closed)');
+    });
+    return text;
+  }
+
+  function link() {
+    return share.linkFor(recordingText());
+  }
+
+  function copyLink() {
+    return link().then(function (url) {
+      if (url.length > share.MAX_LINK) {
+        ui.note('This recording makes a link of ' + url.length + ' characters, longer than the ' +
+                share.MAX_LINK + ' a link may have: use Export to save it as a file');
+        return url;
+      }
+      return share.copy(url).then(function () {
+        ui.note('Link copied (' + url.length + ' characters): it replays this recording');
+      }, function () {
+        window.prompt('Copy this link (the browser kept the clipboard closed):', url);
+      }).then(function () { return url; });
+    });
+  }
+
+  function openFile(file) {
+    share.readFile(file).then(function (text) {
+      load(text, 'custom', null);
+      ui.note('Opened ' + file.name);
+    }).catch(function (e) {
+      ui.error('Scene not loaded: ' + core.message(e) + ' (' + file.name + '; the previous scene keeps running)');
+    });
   }
 
   function usePreset(name, params) {
@@ -170,14 +296,24 @@
     return out;
   }
 
-  // New settings for the running cloth; a rejected scene leaves everything as it was.
+  // New settings for the running cloth (the core's set: cloth/api.py set_settings, what a
+  // recorded `set` action replays); a rejected one leaves everything as it was.
   function retune(p, note) {
+    const keys = {};
+    if (p.iterations !== s.params.iterations) keys.iterations = p.iterations;
+    if (p.substeps !== s.params.substeps) keys.substeps = p.substeps;
+    if (p.solver !== s.params.solver) keys.solver = p.solver;
+    if (p.damping !== s.params.damping) keys.damping = p.damping;
+    if (p.gravity !== s.params.gravity) keys.gravity = [s.cloth.scene.gravity_x, p.gravity];
     const obj = withSettings(s.sceneObj, p);
-    const text = JSON.stringify(obj);
     try {
       const limit = scenes.pageLimit(obj);
       if (limit) throw new Error(limit);
-      core.setScene(s.cloth, text);
+      if (Object.keys(keys).length) {
+        takeOver();
+        core.setSettings(s.cloth, JSON.stringify(keys));
+        recorder.set(s.frames, keys);
+      }
     } catch (e) {
       ui.error('Setting not applied: ' + e.message + ' (the cloth runs on as it was)');
       ui.setParams(s.params);
@@ -185,8 +321,8 @@
       return;
     }
     s.sceneObj = obj;
-    s.sceneText = text;       // Reset restarts with the new settings
-    s.params = paramsFrom(obj, s.cloth);
+    s.sceneText = JSON.stringify(obj);   // Reset restarts with the new settings
+    s.params = paramsOf(s.cloth);
     ui.setParams(s.params);
     ui.setSolver(s.params.solver);
     ui.note(note);
@@ -194,21 +330,18 @@
   }
 
   // A new grid. Pins keep their meaning, row and column: the preset's pins for the new size
-  // (a custom scene's own, moved to the same row and column), with the pins a person set or
-  // removed carried over; what falls outside the new grid is dropped, and the note says so.
+  // (a custom scene's own pins and scripted actions, moved to the same row and column), with
+  // the pins a person set or removed (s.pinEdits, kept over any number of grid changes)
+  // written over them, and the vertices a hand holds held again. What falls outside the new
+  // grid is dropped, and the note says so.
   function regrid(p, note) {
-    const oldCols = s.cloth.cols, oldRows = s.cloth.rows;
+    const oldCols = s.cloth.cols;
     function moved(k) {
       const r = Math.floor(k / oldCols), c = k - r * oldCols;
       return r < p.rows && c < p.cols ? r * p.cols + c : -1;
     }
+    function place(k) { return 'row ' + Math.floor(k / oldCols) + ' column ' + (k % oldCols); }
     const dropped = [];
-    const scenePins = {};
-    s.cloth.scene.pins.forEach(function (k) { scenePins[k] = true; });
-    const changed = [];     // vertices whose pin a person toggled
-    for (let k = 0; k < s.cloth.n_verts; k++) {
-      if ((s.cloth.pinned[k] === 1) !== !!scenePins[k]) changed.push(k);
-    }
     let obj, view, preset = s.preset;
     if (preset !== 'custom') {
       const made = scenes.make(preset, p);
@@ -216,15 +349,17 @@
     } else {
       obj = withSettings(s.sceneObj, p);
       obj.cols = p.cols; obj.rows = p.rows;
+      delete obj.frames;      // a new grid is a new scene, not the recording it came from
       obj.pins = [];
       s.cloth.scene.pins.forEach(function (k) {
         const m = moved(k);
-        if (m >= 0) obj.pins.push(m); else dropped.push('pin ' + k);
+        if (m >= 0) obj.pins.push(m); else dropped.push('pin at ' + place(k));
       });
       if (Array.isArray(s.sceneObj.actions)) {
         let lost = 0;
         obj.actions = [];
         s.sceneObj.actions.forEach(function (a) {
+          if (a.op === 'set') { obj.actions.push(a); return; }
           const m = moved(a.vertex);
           if (m >= 0) obj.actions.push(Object.assign({}, a, { vertex: m })); else lost++;
         });
@@ -234,19 +369,24 @@
     }
     const pins = {};
     obj.pins.forEach(function (k) { pins[k] = true; });
-    changed.forEach(function (k) {
-      const m = moved(k);
-      if (m < 0) { if (s.cloth.pinned[k] === 1) dropped.push('pin ' + k); return; }
-      if (s.cloth.pinned[k] === 1) pins[m] = true; else delete pins[m];
+    const edits = {};
+    Object.keys(s.pinEdits).forEach(function (key) {
+      const k = Number(key), m = moved(k), pinned = s.pinEdits[key];
+      if (m < 0) { if (pinned) dropped.push('your pin at ' + place(k)); return; }
+      edits[m] = pinned;
+      if (pinned) pins[m] = true; else delete pins[m];
     });
     obj.pins = Object.keys(pins).map(Number).sort(function (x, y) { return x - y; });
+    const holds = input.held().map(function (h) { return { k: moved(h.k), was: h.k, id: h.id }; });
     const text = JSON.stringify(obj);
     try {
-      load(text, preset, view);
+      load(text, preset, view, holds);
     } catch (e) {
       ui.setParams(s.params);  // the banner shows why; the old scene runs on
       return;
     }
+    s.pinEdits = edits;
+    holds.forEach(function (h) { if (h.k < 0) dropped.push('the held vertex at ' + place(h.was)); });
     const notes = [];
     if (note) notes.push(note);
     if (ui.noteText().indexOf('slow motion') >= 0) notes.push(ui.noteText());   // load()'s warning
@@ -295,8 +435,10 @@
   // ---- stepping and drawing -------------------------------------------------
 
   // Runs up to n frames; with a budget (ms), stops once it is spent (at least one frame
-  // runs). Returns the frames run.
+  // runs); a replay stops at its last frame. Returns the frames run.
   function simulate(n, budgetMs) {
+    if (s.replayEnd >= 0) n = Math.min(n, s.replayEnd - s.frames);
+    if (n <= 0) { atReplayEnd(); return 0; }
     const m = s.m;
     const scripted = s.cloth.scene.actions.length;
     if (s.cloth.asleep && s.nextAction >= scripted) {
@@ -304,33 +446,40 @@
       // operation wakes it.
       s.frames += n;
       s.simMs = NaN;   // nothing to time: the readout says "at rest"
+      atReplayEnd();
       return n;
     }
     const t0 = performance.now();
-    // A scene's scripted actions play at their frames, as in the CLI (core.applyDue).
     let done = 0;
     while (done < n) {
-      if (s.nextAction < scripted) s.nextAction = core.applyDue(s.cloth, s.nextAction, s.frames + done);
       m.frame();
       done++;
+      s.frames++;
+      if (s.nextAction < scripted) script(s.frames);
       if (budgetMs > 0 && performance.now() - t0 > budgetMs) break;
     }
-    n = done;
     m.measure();
     // The core's max_speed safety net engaged: the settings are unstable (one sweep per
     // step on an undamped grid). Say so rather than let it pass silently.
     if (s.cloth.clamped > s.clamped) {
       s.clamped = s.cloth.clamped;
       // (Damping does not cure it: measured, 1.8 million capped vertex-steps with damping 1.)
-      ui.note('Unstable settings: speeds were capped at max_speed; use more iterations or ' +
-              'substeps, or the default solver');
+      const speed = s.cloth.scene.max_speed;
+      ui.note(speed < 1000
+        ? 'Speeds were capped at the scene\'s max_speed of ' + speed + ' m/s'
+        : 'Unstable settings: speeds were capped at max_speed; use more iterations or ' +
+          'substeps, or the default solver');
     }
-    const ms = (performance.now() - t0) / n;
+    const ms = (performance.now() - t0) / done;
     s.simMs = Number.isFinite(s.simMs) ? s.simMs + EMA * (ms - s.simMs) : ms;
-    s.frames += n;
     s.needMeasure = false;
     s.dirty = true;
-    return n;
+    atReplayEnd();
+    return done;
+  }
+
+  function atReplayEnd() {
+    if (s.replayEnd >= 0 && s.frames >= s.replayEnd) endReplay();
   }
 
   // The overlays' boxes in client pixels (left, top, right, bottom each), measured on a
@@ -384,10 +533,13 @@
     s.renders++;
   }
 
-  function advance(frames) {
+  // Test seam: run `frames` frames now and draw them (with `undrawn`, leave the drawing to
+  // the next animation frame: a script that steps thousands of times in one task would
+  // otherwise queue a draw for each).
+  function advance(frames, undrawn) {
     const n = Math.max(0, Math.floor(Number(frames) || 0));
     if (n > 0) simulate(n);
-    render();
+    if (!undrawn) render();
     return s.frames;
   }
 
@@ -408,10 +560,12 @@
     const slow = !s.paused && s.speed < SLOW_MOTION;
     ui.setReadouts({
       simMs: s.simMs, renderMs: s.renderMs, fps: s.fps, rms: c.rms_strain, max: c.max_strain,
-      size: c.cols + '×' + c.rows + ' · ' + c.n_edges + ' edges' + (c.asleep ? ' · at rest' : '') +
+      size: c.cols + '×' + c.rows + ' · ' + c.n_edges + (c.n_edges === 1 ? ' edge' : ' edges') + (c.asleep ? ' · at rest' : '') +
         (slow ? ' · slow motion ×' + s.speed.toFixed(2) : ''),
     });
     ui.setLegend(s.scale, s.scaleMode === 'fixed' ? 'fixed' : (frameMax() > AUTO_FLOOR ? 'max' : 'floor'));
+    ui.setRecording({ frames: s.frames, actions: recorder.count(), full: recorder.full(),
+                      complete: recorder.complete(s.frames), replayEnd: s.replayEnd });
   }
 
   function tick(nowMs) {
@@ -448,6 +602,8 @@
     return renderer.toWorld(clientX - r.left, clientY - r.top);
   }
 
+  // What a person does to the cloth: applied at once through the core, then recorded at the
+  // current frame (recorder.js). A person acting during a replay takes over (takeOver).
   const input = window.clothInput.attach(canvas, {
     toWorld: toWorld,
     pick: function (x, y, radiusCss) {
@@ -455,15 +611,44 @@
       return s.m.nearest(x, y, radiusCss / renderer.pixelsPerMetre());
     },
     positionOf: function (k) { return [s.cloth.pos[2 * k], s.cloth.pos[2 * k + 1]]; },
-    grab: function (k, x, y) { s.m.grab(k, x, y); s.needMeasure = true; s.dirty = true; },
-    move: function (k, x, y) { s.m.move(k, x, y); s.needMeasure = true; s.dirty = true; },
-    release: function (k) {
-      if (k < s.cloth.n_verts) s.m.release(k);
-      s.needMeasure = true; s.dirty = true;
+    grab: function (k, x, y) {
+      takeOver();
+      s.m.grab(k, x, y);
+      recorder.grab(s.frames, k, x, y);
+      touched();
     },
-    togglePin: function (k) { s.m.toggle_pin(k); s.needMeasure = true; s.dirty = true; },
-    isHeld: function (k) { return s.cloth.held[k] !== 0; },
+    move: function (k, x, y) {
+      const pos = s.cloth.pos, x0 = pos[2 * k], y0 = pos[2 * k + 1];
+      if (x === x0 && y === y0) return;       // a hand held still changes nothing
+      takeOver();
+      s.m.move(k, x, y);
+      recorder.move(s.frames, k, x, y, x0, y0);
+      touched();
+    },
+    release: function (k) {
+      if (k >= s.cloth.n_verts || s.cloth.held[k] === 0) return;
+      takeOver();
+      s.m.release(k);
+      recorder.release(s.frames, k);
+      touched();
+    },
+    togglePin: function (k) {
+      takeOver();
+      const pinned = s.cloth.pinned[k] !== 0;
+      s.m.toggle_pin(k);
+      if (pinned) recorder.unpin(s.frames, k); else recorder.pin(s.frames, k);
+      s.pinEdits[k] = !pinned;
+      touched();
+    },
+    // Held by someone else: another pointer, or the scene's script (a replay's script lets go
+    // when a person takes over, so its vertices can be grabbed then).
+    isHeld: function (k) { return s.cloth.held[k] !== 0 && (s.replayEnd < 0 || input.holds(k)); },
   });
+
+  function touched() {
+    s.needMeasure = true;
+    s.dirty = true;
+  }
 
   function resizeFromRect() {
     if (!renderer.ok) return;
@@ -524,6 +709,12 @@
     },
     setPaused: setPaused,
     advance: advance,
+    // The recording since the last load or reset, as scene JSON text with `frames`.
+    recording: recordingText,
+    // A Promise of the link that replays the recording.
+    link: link,
+    replay: function () { replay(); return true; },
+    exportRecording: exportRecording,
     setColorMode: setColorMode,
     loadScene: loadScene,
     // Extras for tests and the console.
@@ -548,6 +739,9 @@
         drawCalls: renderer.drawCalls || 0, paused: s.paused, mode: s.mode, scaleMode: s.scaleMode,
         scale: s.scale, fullScale: s.fullScale, frames: s.frames, preset: s.preset, params: s.params,
         asleep: !!(s.cloth && s.cloth.asleep), renders: s.renders,
+        replay: { playing: s.replayEnd >= 0, end: s.replayEnd, ended: s.replayEnded },
+        linkPending: !!s.linkPending,
+        recorded: recorder.count(), recordingFull: recorder.full(),
         error: ui.errorText(), note: ui.noteText(), scene: s.sceneText,
         canvas: [canvas.width, canvas.height], dpr: window.devicePixelRatio || 1,
       };
@@ -566,5 +760,24 @@
   }
   if (options.paused) setPaused(true);
   if (options.notes.length) ui.note(options.notes.join('. '));
+  // A link: the scene (a recording) in the fragment replaces the preset once decoded; it
+  // replays and stops at its last frame. One that cannot be read leaves the preset running.
+  // A link pasted into the address bar of the open page changes only the fragment: the same.
+  function openLink() {
+    const linked = share.sceneIn(window.location.hash);
+    if (!linked) return;
+    setPaused(true);
+    s.linkPending = true;
+    linked.then(function (text) {
+      load(text, 'custom', null);
+      ui.note('Replaying the recording from the link (' + s.replayEnd + ' frames); a gesture takes over');
+    }).catch(function (e) {
+      if (s.preset !== options.preset) usePreset(options.preset);
+      ui.error('The link could not be opened: ' + core.message(e) + '; showing the default scene');
+      setPaused(options.paused);
+    }).then(function () { s.linkPending = false; });
+  }
+  openLink();
+  window.addEventListener('hashchange', openLink);
   window.requestAnimationFrame(tick);
 })();

@@ -27,18 +27,22 @@ window.clothCore = (function (api, modules) {
   }
 
   const core = {
-    // applyDue(cloth, next, frame) -> next: the scene's scripted actions due before `frame`
+    // applyDue(cloth, next, frame) -> next: the scene's actions due at frames up to `frame`
     // (cloth/api.py apply_due, the CLI's own loop).
     applyDue: function (cloth, next, f) { return api.apply_due(cloth, next, f); },
-    // run(sceneJsonText, frames) -> JSON text, as the CLI prints it.
-    run: wrap(function (text, frames) { return api.run(text, frames); }),
+    // run(sceneJsonText[, frames]) -> JSON text, as the CLI prints it (frames omitted: the
+    // scene's own `frames`).
+    run: wrap(function (text, frames) { return api.run(text, frames === undefined ? null : frames); }),
     // load(sceneJsonText) -> a live Cloth (typed arrays, frame(), measure(), grab()...).
     load: wrap(function (text) { return api.load(text); }),
     // build(scene) -> a Cloth from a scene parseScene checked (no second parse).
     build: wrap(function (scene) { return api.build(scene); }),
-    // setScene(cloth, sceneJsonText): new settings for the running cloth, same grid
-    // (cloth/api.py set_scene); throws, changing nothing, on a bad scene.
-    setScene: wrap(function (cloth, text) { return api.set_scene(cloth, text); }),
+    // setSettings(cloth, keysJsonText): new settings for the running cloth, as an object of
+    // scene keys (cloth/api.py set_settings: what a recorded `set` action does); throws,
+    // changing nothing, on bad keys.
+    setSettings: wrap(function (cloth, text) { return api.set_settings(cloth, text); }),
+    // dropActionsAfter(cloth, frame): forget the script after that frame (a person took over).
+    dropActionsAfter: function (cloth, f) { api.drop_actions_after(cloth, f); },
     message: message,
     api: api,
   };

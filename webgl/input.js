@@ -40,6 +40,10 @@ window.clothInput = (function () {
     }, { passive: false });
 
     canvas.addEventListener('pointerdown', function (e) {
+      // preventDefault below keeps focus where it was: a field clicked before would go on
+      // taking the keys, and the shortcuts would stay dead. Pressing the cloth leaves it.
+      const focused = document.activeElement;
+      if (focused && focused !== document.body && focused.blur) focused.blur();
       const hit = pickAt(e);
       // Right button (mouse, or a pen's barrel button) or Shift+click: toggle a pin.
       if (e.button === 2 || (e.button === 0 && e.shiftKey && e.pointerType === 'mouse')) {
@@ -99,11 +103,50 @@ window.clothInput = (function () {
     canvas.addEventListener('lostpointercapture', end);
 
     return {
-      // Let go of everything (a scene change invalidates vertex indices).
-      releaseAll: function () { drags.clear(); canvas.classList.remove('dragging'); },
+      // A new cloth: every pointer lets go, but those in `keep` ([{id, k}], k >= 0), which go
+      // on with vertex k of the new cloth (regrab holds it).
+      releaseAll: function (keep) {
+        const next = new Map();
+        keep.forEach(function (h) {
+          const d = drags.get(h.id);
+          if (d && h.k >= 0) { d.k = h.k; d.fresh = true; next.set(h.id, d); }
+        });
+        drags.clear();
+        next.forEach(function (d, id) { drags.set(id, d); });
+        if (drags.size === 0) canvas.classList.remove('dragging');
+      },
+      // The kept pointers hold their vertex of the new cloth where it is, with their offset
+      // to it from here on.
+      regrab: function () {
+        drags.forEach(function (d) {
+          if (!d.fresh) return;
+          d.fresh = false;
+          const v = app.positionOf(d.k), w = app.toWorld(d.cx, d.cy);
+          d.ox = v[0] - w[0]; d.oy = v[1] - w[1];
+          app.grab(d.k, v[0], v[1]);
+        });
+      },
+      // [{id, k}] for every pointer holding a vertex.
+      held: function () {
+        const out = [];
+        drags.forEach(function (d, id) { out.push({ id: id, k: d.k }); });
+        return out;
+      },
       dragging: function () { return drags.size; },
       // The view changed (a resize): put each held vertex back under its pointer.
       reproject: function () { drags.forEach(function (d) { follow(d, d.cx, d.cy); }); },
+      // Does a pointer hold vertex k?
+      holds: function (k) {
+        let found = false;
+        drags.forEach(function (d) { if (d.k === k) found = true; });
+        return found;
+      },
+      // Vertex k is no longer this input's (a scene's script took it): its pointer stops
+      // moving it and will not release it.
+      forget: function (k) {
+        drags.forEach(function (d, id) { if (d.k === k) drags.delete(id); });
+        if (drags.size === 0) canvas.classList.remove('dragging');
+      },
     };
   }
 

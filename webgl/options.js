@@ -10,28 +10,39 @@ window.clothOptions = (function () {
   const FLAGS = { '1': true, 'true': true, 'yes': true, '0': false, 'false': false, 'no': false };
   const WEBGL = { auto: 'auto', '2': 'auto', '1': '1', '0': '0', off: '0', none: '0' };
 
-  // parse(search, presets) -> {preset, paused, webgl, notes: [text...]}
+  const MAX_NOTES = 4;
+
+  // parse(search, presets) -> {preset, paused, webgl, notes: [text...]}. Values are matched
+  // without regard to case; an option given twice says so (the last one counts); at most
+  // MAX_NOTES notes, then how many more.
   function parse(search, presets) {
     const q = new URLSearchParams(search);
     const out = { preset: 'curtain', paused: false, webgl: 'auto', notes: [] };
+    const notes = [];
+    const seen = {};
     function unknown(key, value, allowed) {
-      out.notes.push('URL option ' + key + '=' + JSON.stringify(value).slice(0, 40) +
-                     ' is not one of ' + allowed + '; using the default');
+      notes.push('URL option ' + key + '=' + JSON.stringify(value).slice(0, 40) +
+                 ' is not one of ' + allowed + '; using the default');
     }
     q.forEach(function (value, key) {
+      const v = value.toLowerCase();
+      if (own(seen, key)) notes.push('URL option ' + key.slice(0, 40) + ' is given more than once; the last one counts');
+      seen[key] = true;
       if (key === 'preset') {
-        if (own(presets, value)) out.preset = value;
+        if (own(presets, v)) out.preset = v;
         else unknown(key, value, Object.keys(presets).join(', '));
       } else if (key === 'paused') {
-        if (own(FLAGS, value.toLowerCase())) out.paused = FLAGS[value.toLowerCase()];
+        if (own(FLAGS, v)) out.paused = FLAGS[v];
         else unknown(key, value, '1, 0, true, false');
       } else if (key === 'webgl') {
-        if (own(WEBGL, value.toLowerCase())) out.webgl = WEBGL[value.toLowerCase()];
+        if (own(WEBGL, v)) out.webgl = WEBGL[v];
         else unknown(key, value, 'auto, 2, 1, 0');
       } else {
-        out.notes.push('Unknown URL option "' + key.slice(0, 40) + '" ignored (known: preset, paused, webgl)');
+        notes.push('Unknown URL option ' + JSON.stringify(key).slice(0, 40) + ' ignored (known: preset, paused, webgl)');
       }
     });
+    out.notes = notes.slice(0, MAX_NOTES);
+    if (notes.length > MAX_NOTES) out.notes.push('and ' + (notes.length - MAX_NOTES) + ' more about the URL');
     return out;
   }
 

@@ -16,7 +16,7 @@ window.clothScenes = (function () {
     substeps: { min: 1, max: 16, int: true, label: 'Substeps' },
     gravity: { min: -100, max: 100, int: false, label: 'Gravity' },
     damping: { min: 0, max: 100, int: false, label: 'Damping' },
-    fullScale: { min: 0.0001, max: 1, int: false, label: 'Full-scale strain' },
+    fullScale: { min: 0.0001, max: 1, int: false, label: 'Full scale' },
   };
 
   // Each solver's own substeps and iterations (mirrors cloth/scene.py's

@@ -5,6 +5,7 @@
 
 window.clothUI = (function () {
   const PRESET_KEYS = { '1': 'curtain', '2': 'corners', '3': 'chain', '4': 'large' };
+  const ACTION_KEYS = { p: 'replay', e: 'exportFile', l: 'copyLink' };
 
   function $(id) { return document.getElementById(id); }
 
@@ -48,7 +49,8 @@ window.clothUI = (function () {
   }
 
   // h: {pause, step, reset, preset(name), solver(name), param(key, raw), mode(m), scaleMode(m),
-  //     fullScale(raw), loadJson(text), currentJson() -> text}
+  //     fullScale(raw), loadJson(text), currentJson() -> text, replay, exportFile, copyLink,
+  //     openFile(file)}
   function create(h) {
     const el = {
       pause: $('btn-pause'), step: $('btn-step'), reset: $('btn-reset'), help: $('btn-help'),
@@ -59,6 +61,8 @@ window.clothUI = (function () {
       paused: $('r-paused'), legend: $('legend'), legendTitle: $('legend-title'),
       legendLo: $('legend-lo'), legendMid: $('legend-mid'), legendHi: $('legend-hi'),
       sim: $('r-sim'), render: $('r-render'), fps: $('r-fps'), rms: $('r-rms'), max: $('r-max'), size: $('r-size'),
+      recStatus: $('rec-status'), replay: $('r-replay'), replayFrame: $('r-replay-frame'), replayEnd: $('r-replay-end'),
+      fileInput: $('file-input'),
     };
     const params = ['cols', 'rows', 'iterations', 'substeps', 'gravity', 'damping'];
     let noteTimer = 0;
@@ -70,6 +74,14 @@ window.clothUI = (function () {
       return input.validity && input.validity.badInput ? null : input.value;
     }
 
+    // A button clicked with a pointer gives focus back to the page, so that Space and the
+    // other shortcuts work at once (a focused button would take Space and click itself
+    // again: Reset twice). Keyboard clicks (detail 0) keep focus where the person put it.
+    // Capture phase: before the button's own handler moves focus (the help's Close).
+    document.addEventListener('click', function (e) {
+      const b = e.target && e.target.closest ? e.target.closest('button') : null;
+      if (b && e.detail > 0) b.blur();
+    }, true);
     el.pause.addEventListener('click', function () { h.pause(); });
     el.step.addEventListener('click', function () { h.step(); });
     el.reset.addEventListener('click', function () { h.reset(); });
@@ -93,6 +105,36 @@ window.clothUI = (function () {
       try { h.loadJson(el.json.value); } catch (e) { /* shown in the banner */ }
     });
     el.showJson.addEventListener('click', function () { el.json.value = h.currentJson(); });
+    $('btn-replay').addEventListener('click', function () { h.replay(); });
+    $('btn-export').addEventListener('click', function () { h.exportFile(); });
+    $('btn-link').addEventListener('click', function () { h.copyLink(); });
+    $('btn-open').addEventListener('click', function () { el.fileInput.click(); });
+    el.fileInput.addEventListener('change', function () {
+      const f = el.fileInput.files && el.fileInput.files[0];
+      el.fileInput.value = '';       // choosing the same file again fires change again
+      if (f) h.openFile(f);
+    });
+    // A file dropped anywhere on the page opens (the browser would otherwise navigate to it).
+    function hasFiles(e) {
+      const t = e.dataTransfer && e.dataTransfer.types;
+      return !!t && Array.prototype.indexOf.call(t, 'Files') >= 0;
+    }
+    window.addEventListener('dragover', function (e) {
+      if (!hasFiles(e)) return;
+      e.preventDefault();
+      e.dataTransfer.dropEffect = 'copy';
+      document.body.classList.add('dropping');
+    });
+    window.addEventListener('dragleave', function (e) {
+      if (e.relatedTarget === null) document.body.classList.remove('dropping');
+    });
+    window.addEventListener('drop', function (e) {
+      document.body.classList.remove('dropping');
+      if (!hasFiles(e)) return;
+      e.preventDefault();
+      const f = e.dataTransfer.files[0];
+      if (f) h.openFile(f);
+    });
 
     // Shortcuts work wherever focus is, except where the key types text or works the
     // focused control: a text field takes every key; a button, a summary or a link takes
@@ -117,6 +159,8 @@ window.clothUI = (function () {
       else if (k === 'a' || k === 'A') h.scaleMode(null);
       else if (k === 'h' || k === 'H' || k === '?') ui.showHelp(true);
       else if (Object.prototype.hasOwnProperty.call(PRESET_KEYS, k)) h.preset(PRESET_KEYS[k]);
+      else if (Object.prototype.hasOwnProperty.call(ACTION_KEYS, k.toLowerCase())) h[ACTION_KEYS[k.toLowerCase()]]();
+      else if (k === 'o' || k === 'O') el.fileInput.click();
       else handled = false;
       if (handled) e.preventDefault();
     });
@@ -163,6 +207,17 @@ window.clothUI = (function () {
         el.rms.textContent = fmt(r.rms, 4);
         el.max.textContent = fmt(r.max, 4);
         el.size.textContent = r.size;
+      },
+      // The recording's state, and a replay's progress (frame k of F) while one plays.
+      setRecording: function (r) {
+        el.recStatus.textContent = r.full
+          ? 'recording full at frame ' + r.complete + ' (' + r.actions + ' actions): later gestures are not kept'
+          : 'recording · ' + r.frames + ' frames · ' + r.actions + ' action' + (r.actions === 1 ? '' : 's');
+        el.replay.hidden = r.replayEnd < 0;
+        if (r.replayEnd >= 0) {
+          el.replayFrame.textContent = String(r.frames);
+          el.replayEnd.textContent = String(r.replayEnd);
+        }
       },
       // A short-lived note under the inputs (clamped values).
       note: function (msg) {

@@ -119,6 +119,17 @@ def test_an_unknown_url_option_gets_a_note_and_the_defaults(open_page):
         assert pg.locator('#fatal').is_hidden()
         pg.select_option('#preset', 'chain')
         assert pg.info()['preset'] == 'chain' and pg.locator('#fatal').is_hidden()
+    # a value in another case is the same value; an option given twice says so; a flood of
+    # unknown options gives a few notes, not a wall of text
+    pg.goto(DIST.as_uri() + '?preset=Chain&paused=TRUE')
+    pg.wait_for_function('() => !!window.clothApp')
+    assert pg.info()['preset'] == 'chain' and pg.info()['paused'] and pg.info()['note'] == ''
+    pg.goto(DIST.as_uri() + '?preset=chain&preset=corners')
+    pg.wait_for_function('() => !!window.clothApp')
+    assert pg.info()['preset'] == 'corners' and 'more than once' in pg.info()['note']
+    pg.goto(DIST.as_uri() + '?' + '&'.join('x%d=1' % i for i in range(300)))
+    pg.wait_for_function('() => !!window.clothApp')
+    assert 'and 296 more' in pg.info()['note'] and len(pg.info()['note']) < 600
     for query in ['?paused=true', '?paused=1', '?paused=yes']:
         pg.goto(DIST.as_uri() + query)
         pg.wait_for_function('() => !!window.clothApp')
@@ -208,9 +219,66 @@ def test_a_grid_change_keeps_pins_at_their_row_and_column(open_page):
     assert obj['pins'] == [0, 25, 34]
     # (7,5) -> 75 for the grab and its release; the pin of (0,18) falls outside
     assert [a['vertex'] for a in obj['actions']] == [75, 75]
-    assert 'dropped' in info['note'] and 'pin 19' in info['note'] and 'pin 199' in info['note']
-    assert '1 scripted action' in info['note']
+    note = info['note']
+    assert 'dropped' in note and 'pin at row 0 column 19' in note and 'pin at row 9 column 19' in note
+    assert '1 scripted action' in note
     assert pg.state()['pinned'][34]
+
+
+def test_a_persons_pin_changes_survive_any_number_of_grid_changes(open_page):
+    pg = open_page()                                    # the curtain: every 4th top vertex pinned
+    pg.js('clothApp.setPaused(true)')
+    st = pg.state()
+    pg.mouse.click(*st['screen'][4], button='right')              # unpin (0, 4)
+    pg.mouse.click(*st['screen'][10 * 40 + 2], button='right')    # pin (10, 2)
+    pg.mouse.click(*st['screen'][29 * 40 + 30], button='right')   # pin (29, 30)
+    set_input(pg, '#rows', '29')
+    # the pin at row 29 falls outside a 29-row grid, and the note says so
+    assert 'your pin at row 29 column 30' in pg.info()['note']
+    for cols, rows in [(20, 29), (24, 29), (40, 29), (40, 12), (33, 30)]:
+        set_input(pg, '#cols', str(cols))
+        set_input(pg, '#rows', str(rows))
+        pinned = pg.state()['pinned']
+        assert not pinned[4] and pinned[10 * cols + 2], (cols, rows)
+        assert sum(pinned) == len(range(0, cols, 4)) + (0 if (cols - 1) % 4 == 0 else 1), (cols, rows)
+
+
+def test_scripted_pins_are_not_taken_for_a_persons(open_page):
+    pg = open_page()
+    scene = {'cols': 20, 'rows': 15, 'spacing': 0.05, 'pins': [0, 5, 10, 14, 19],
+             'actions': [{'frame': 20, 'op': 'unpin', 'vertex': 5}, {'frame': 25, 'op': 'pin', 'vertex': 22}]}
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps(scene))
+    pg.js('clothApp.setPaused(true)')
+    pg.js('clothApp.advance(40)')
+    set_input(pg, '#cols', '10')
+    obj = json.loads(pg.info()['scene'])
+    assert obj['pins'] == [0, 5]
+    assert obj['actions'] == [{'frame': 20, 'op': 'unpin', 'vertex': 5}, {'frame': 25, 'op': 'pin', 'vertex': 12}]
+    set_input(pg, '#cols', '20')
+    assert json.loads(pg.info()['scene'])['pins'] == [0, 5]
+
+
+def test_a_held_vertex_stays_held_through_a_grid_change(open_page):
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    k = 29 * 40 + 20
+    x, y = pg.state()['screen'][k]
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    set_input(pg, '#cols', '30')
+    st = pg.state()
+    k2 = 29 * 30 + 20
+    assert st['held'][k2] and sum(st['held']) == 1
+    x0, y0 = st['screen'][k2]
+    pg.mouse.move(x + 40, y - 30)
+    st = pg.state()
+    assert abs(st['screen'][k2][0] - (x0 + 40)) < 0.01 and abs(st['screen'][k2][1] - (y0 - 30)) < 0.01
+    pg.mouse.up()
+    assert not any(pg.state()['held'])
+    # the new recording holds it from frame 0
+    rec = json.loads(pg.js('clothApp.recording()'))
+    assert rec['actions'][0] == {'frame': 0, 'op': 'grab', 'vertex': k2, 'to': st['positions'][k2]} or \
+        rec['actions'][0]['op'] == 'grab'
 
 
 # ---- 9: shortcuts wherever focus is ----------------------------------------------------------
@@ -231,6 +299,44 @@ def test_shortcuts_work_after_a_toggle_or_a_menu(open_page):
     pg.locator('#btn-step').click()
     pg.keyboard.press('h')
     assert pg.locator('#help').is_visible()
+
+
+def test_shortcuts_work_after_pressing_the_cloth_from_a_field(open_page):
+    # The canvas's pointerdown calls preventDefault, which kept focus in a field clicked
+    # before: the shortcuts stayed dead until a click elsewhere.
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    pg.locator('#cols').click()
+    x, y = pg.state()['screen'][29 * 40 + 20]
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    pg.mouse.up()
+    pg.keyboard.press('Space')
+    assert not pg.info()['paused']
+    pg.keyboard.press('c')
+    assert pg.info()['mode'] == 'stress'
+
+
+def test_a_button_clicked_with_the_mouse_leaves_space_to_the_shortcuts(open_page):
+    pg = open_page()
+    for button in ['#btn-reset', '#btn-step', '#btn-show-json', '#btn-help']:
+        if button == '#btn-show-json':
+            pg.locator('#json-box summary').click()
+        pg.locator(button).click()
+        if button == '#btn-help':
+            pg.keyboard.press('Escape')
+        paused = pg.info()['paused']
+        frames = pg.info()['frames']
+        pg.keyboard.press('Space')
+        info = pg.info()
+        assert info['paused'] != paused, button            # Space paused or resumed ...
+        assert info['frames'] >= frames, button            # ... and did not reset the scene
+        assert pg.locator('#help').is_hidden(), button
+    # a keyboard user who tabs to a button still works it with Space
+    pg.locator('#btn-reset').focus()
+    pg.js('clothApp.advance(30)')
+    pg.keyboard.press('Space')
+    assert pg.info()['frames'] < 30
 
 
 def test_the_help_is_modal(open_page):

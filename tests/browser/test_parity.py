@@ -110,6 +110,15 @@ SCENES = {
     'teleport': (grid(5, 5, pins=[0, 4], actions=[
         {'frame': 1, 'op': 'grab', 'vertex': 22, 'to': [100.0, -100.0]},
         {'frame': 2, 'op': 'release', 'vertex': 22}]), 40),
+    # Settings changed on the running cloth (what the page records when a person changes
+    # them), and a recording's own `frames` (run with frames None).
+    'set-settings-mid-run': (grid(8, 6, pins=[0, 7], actions=DRAG + [
+        {'frame': 3, 'op': 'set', 'scene': {'substeps': 3, 'damping': 2}},
+        {'frame': 7, 'op': 'set', 'scene': {'solver': 'jakobsen'}},
+        {'frame': 9, 'op': 'set', 'scene': {'gravity': [1, -4], 'iterations': 5}},
+        {'frame': 12, 'op': 'set', 'scene': {'solver': 'xpbd', 'dt': 0.02, 'compliance': 1e-4}}]), 30),
+    'recording-frames-key': (grid(6, 5, pins=[0, 5], frames=33, actions=[
+        {'frame': 33, 'op': 'grab', 'vertex': 20, 'to': [0.1, 0.2]}]), None),
 }
 
 
@@ -132,6 +141,12 @@ def test_larger_grid_many_frames(core):
     ('{"cols": 2, "rows": 2, "spacing": 1, "pins": [9]}', 1),
     ('{"cols": 2, "rows": 2, "spacing": 1, "solver": "magic"}', 1),
     ('{"cols": 2, "rows": 2, "spacing": 1}', -1),
+    ('{"cols": 2, "rows": 2, "spacing": 1}', None),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "dt": 1e-300}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "a\\nb": 1}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "\\ud800\\ud83d\\ude00": 1}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "actions": [{"frame": 0, "op": "set", "scene": {"rows": 3}}]}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "frames": 2.5}', None),
 ])
 def test_same_error_message_in_both_runtimes(core, text, frames):
     with pytest.raises(SceneError) as err:
@@ -163,7 +178,17 @@ def scenes(draw):
     actions, held = [], set()
     for _ in range(draw(st.integers(0, 8))):
         frame = draw(st.integers(0, 12))
-        op = draw(st.sampled_from(['grab', 'move', 'release', 'pin', 'unpin']))
+        op = draw(st.sampled_from(['grab', 'move', 'release', 'pin', 'unpin', 'set']))
+        if op == 'set':
+            keys = {}
+            for key, strategy in [('substeps', st.integers(1, 4)), ('iterations', st.integers(0, 8)),
+                                  ('solver', st.sampled_from(['jakobsen', 'xpbd'])),
+                                  ('damping', st.floats(0, 3)), ('tethers', st.booleans()),
+                                  ('gravity', st.tuples(coord, coord).map(list))]:
+                if draw(st.booleans()):
+                    keys[key] = draw(strategy)
+            actions.append({'frame': frame, 'op': 'set', 'scene': keys})
+            continue
         k = draw(vertex)
         if op in ('move', 'release') and held:
             k = draw(st.sampled_from(sorted(held)))
@@ -176,8 +201,10 @@ def scenes(draw):
 
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(scene=scenes(), frames=st.integers(0, 15))
+@given(scene=scenes(), frames=st.one_of(st.integers(0, 15), st.none()))
 def test_random_scenes_are_bit_identical(core, scene, frames):
+    if frames is None:
+        scene['frames'] = 9          # a recording runs its own frames
     text = json.dumps(scene)
     try:
         py = run(text, frames)

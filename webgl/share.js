@@ -1,0 +1,139 @@
+// Scenes in and out of the page without a server: a file saved by a Blob download, the
+// clipboard, a file opened or dropped, and a link that carries the scene in its fragment.
+//
+// Link: #scene=<base64url of the deflate-raw compressed UTF-8 JSON> (CompressionStream; where
+// a browser has none, #scene-json=<base64url of the JSON itself>). The fragment never leaves
+// the browser, so a link works from file:// as from any host. MAX_LINK characters at most:
+// a longer recording gets a note that offers the file instead.
+//
+// Bytes are decoded as the CLI decodes them (cloth/__main__.py): strict UTF-8, a leading
+// byte-order mark skipped, and text that is not UTF-8 is refused with the CLI's message,
+// naming the same offset.
+'use strict';
+
+window.clothShare = (function () {
+  const MAX_LINK = 262144;
+  const ZIPPED = 'scene=', PLAIN = 'scene-json=';
+
+  function toBase64Url(bytes) {
+    let bin = '';
+    const CHUNK = 0x8000;
+    for (let i = 0; i < bytes.length; i += CHUNK) {
+      bin += String.fromCharCode.apply(null, bytes.subarray(i, i + CHUNK));
+    }
+    return btoa(bin).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+  }
+
+  function fromBase64Url(text) {
+    if (!/^[A-Za-z0-9_-]*$/.test(text)) throw new Error('it holds characters that base64url has not');
+    if (text.length % 4 === 1) throw new Error('it is cut short');
+    let b64 = text.replace(/-/g, '+').replace(/_/g, '/');
+    while (b64.length % 4) b64 += '=';
+    const bin = atob(b64);
+    const out = new Uint8Array(bin.length);
+    for (let i = 0; i < bin.length; i++) out[i] = bin.charCodeAt(i);
+    return out;
+  }
+
+  function pipe(bytes, stream) {
+    const piped = new Blob([bytes]).stream().pipeThrough(stream);
+    return new Response(piped).arrayBuffer().then(function (b) { return new Uint8Array(b); });
+  }
+
+  const canZip = typeof CompressionStream === 'function' && typeof DecompressionStream === 'function';
+
+  // text -> Promise of the link (this page's address with the scene in its fragment).
+  function linkFor(text) {
+    const bytes = new TextEncoder().encode(text);
+    const here = window.location.href.split('#')[0];
+    const made = canZip ? pipe(bytes, new CompressionStream('deflate-raw')).then(function (z) {
+      return here + '#' + ZIPPED + toBase64Url(z);
+    }) : Promise.resolve(here + '#' + PLAIN + toBase64Url(bytes));
+    return made;
+  }
+
+  // The fragment (location.hash) -> null when it carries no scene, else a Promise of the
+  // scene's text; a malformed or truncated one rejects with an Error that says what is wrong.
+  function sceneIn(hash) {
+    const h = (hash || '').replace(/^#/, '');
+    let zipped;
+    if (h.indexOf(ZIPPED) === 0) zipped = true;
+    else if (h.indexOf(PLAIN) === 0) zipped = false;
+    else return null;
+    const data = h.slice((zipped ? ZIPPED : PLAIN).length);
+    return new Promise(function (resolve) {
+      const bytes = fromBase64Url(data);
+      if (!zipped) { resolve(bytes); return; }
+      if (!canZip) throw new Error('this browser cannot decompress it (no DecompressionStream)');
+      resolve(pipe(bytes, new DecompressionStream('deflate-raw')).catch(function () {
+        throw new Error('it does not decompress: it is damaged or cut short');
+      }));
+    }).then(decode);
+  }
+
+  // The offset of the first byte that is not UTF-8 (as Python's decoder reports it: the start
+  // of the first ill-formed sequence), or -1.
+  function badByte(b) {
+    let i = 0;
+    const n = b.length;
+    while (i < n) {
+      const c = b[i];
+      if (c < 0x80) { i++; continue; }
+      let need, lo = 0x80, hi = 0xBF;
+      if (c >= 0xC2 && c <= 0xDF) need = 1;
+      else if (c >= 0xE0 && c <= 0xEF) {
+        need = 2;
+        if (c === 0xE0) lo = 0xA0;
+        if (c === 0xED) hi = 0x9F;
+      } else if (c >= 0xF0 && c <= 0xF4) {
+        need = 3;
+        if (c === 0xF0) lo = 0x90;
+        if (c === 0xF4) hi = 0x8F;
+      } else return i;
+      for (let j = 1; j <= need; j++) {
+        if (i + j >= n) return i;
+        const d = b[i + j];
+        if (j === 1 ? (d < lo || d > hi) : (d < 0x80 || d > 0xBF)) return i;
+      }
+      i += need + 1;
+    }
+    return -1;
+  }
+
+  // Bytes -> text, as the CLI decodes a scene file; throws the CLI's message.
+  function decode(bytes) {
+    let b = bytes;
+    if (b.length >= 3 && b[0] === 0xEF && b[1] === 0xBB && b[2] === 0xBF) b = b.subarray(3);
+    const bad = badByte(b);
+    if (bad >= 0) throw new Error('scene: not UTF-8 text (invalid byte at offset ' + bad + ')');
+    return new TextDecoder('utf-8', { ignoreBOM: true }).decode(b);   // one BOM only, as Python's utf-8-sig
+  }
+
+  // A File (from a picker or a drop) -> Promise of its text, decoded as the CLI does.
+  function readFile(file) {
+    return file.arrayBuffer().then(function (buf) { return decode(new Uint8Array(buf)); });
+  }
+
+  // Save text as a file: a Blob download, which works from file:// with no server.
+  function download(text, name) {
+    const url = URL.createObjectURL(new Blob([text], { type: 'application/json' }));
+    const a = document.createElement('a');
+    a.href = url;
+    a.download = name;
+    document.body.appendChild(a);
+    a.click();
+    a.remove();
+    setTimeout(function () { URL.revokeObjectURL(url); }, 0);
+  }
+
+  // Promise: resolves when the clipboard has the text, rejects where the browser refuses.
+  function copy(text) {
+    if (!navigator.clipboard || !navigator.clipboard.writeText) {
+      return Promise.reject(new Error('this page has no clipboard access here'));
+    }
+    return navigator.clipboard.writeText(text);
+  }
+
+  return { MAX_LINK: MAX_LINK, linkFor: linkFor, sceneIn: sceneIn, decode: decode,
+           readFile: readFile, download: download, copy: copy, badByte: badByte };
+})();
