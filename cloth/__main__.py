@@ -29,6 +29,8 @@ def main(argv=None):
     p_run.add_argument('--frames', type=int, default=None,
                        help='frames to simulate (>= 0); default: the scene\'s "frames" key')
     p_run.add_argument('--trace', action='store_true', help='add the positions after every frame')
+    p_run.add_argument('--panel', type=int, default=None,
+                       help='run panel N (1 = the first) of the scene\'s "compare" list')
     args = parser.parse_args(argv)
     if sys.stdout is None or (args.scene == '-' and sys.stdin is None):
         # A closed stream (`>&-`, `<&-`): Python makes it None.
@@ -53,11 +55,13 @@ def main(argv=None):
         sys.stderr.write('error: scene: not UTF-8 text (invalid byte at offset ' +
                          str(err.start) + ')\n')
         return 2
+    # --panel N counts from 1, as the page labels its panels; the core from 0.
+    panel = -1 if args.panel is None else (args.panel - 1 if args.panel >= 1 else 10 ** 9)
     try:
         if args.trace:
-            stream_trace(text, args.frames, sys.stdout)
+            stream_trace(text, args.frames, sys.stdout, panel)
         else:
-            sys.stdout.write(run(text, args.frames) + '\n')
+            sys.stdout.write(run(text, args.frames, False, panel) + '\n')
         sys.stdout.flush()
     except SceneError as err:
         sys.stderr.write('error: ' + str(err) + '\n')
@@ -102,10 +106,10 @@ class TraceFile:
         self.count += 1
 
 
-def stream_trace(text, frames, out):
+def stream_trace(text, frames, out, panel=-1):
     """The text `run(text, frames, True)` returns, character for character (the trace is
     its last key), written to `out` with the trace streamed through a temporary file."""
-    cloth = load(text)
+    cloth = load(text, panel)
     frames = frames_of(cloth, frames)
     start(cloth, frames, True)
     with tempfile.TemporaryFile('w+', encoding='utf-8') as spool:

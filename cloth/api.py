@@ -6,21 +6,22 @@ returns, and the parity tests compare its CPython and browser results number for
 
 from cloth.host import to_json, kind_of, is_finite, parse_json
 from cloth.scene import parse_scene, settings_scene, SceneError, fail, MAX_FRAMES
-from cloth.sim import Cloth, frame, measure, grab, move, release, pin, unpin, retune
+from cloth.sim import Cloth, frame, measure, grab, move, release, pin, unpin, retune, cut
 
 # A trace holds frames x vertices points. The CLI streams it (cloth/__main__.py: memory
 # stays that of one frame); in memory, as `run` holds it, it would be gigabytes.
 MAX_TRACE_POINTS = 20000000
 
 
-def load(scene_json_text):
-    """Scene JSON text -> a Cloth ready to step (SceneError if the scene is bad)."""
-    return Cloth(parse_scene(scene_json_text))
+def load(scene_json_text, panel=-1):
+    """Scene JSON text -> a Cloth ready to step (SceneError if the scene is bad); with
+    `panel` >= 0, the cloth of that panel of the scene's `compare` list."""
+    return Cloth(parse_scene(scene_json_text, panel))
 
 
-def check(scene_json_text):
+def check(scene_json_text, panel=-1):
     """Scene JSON text -> a checked Scene, nothing built (SceneError if the scene is bad)."""
-    return parse_scene(scene_json_text)
+    return parse_scene(scene_json_text, panel)
 
 
 def build(scene):
@@ -73,6 +74,8 @@ def apply_action(cloth, action):
         unpin(cloth, k)
     elif op == 'set':
         apply_settings(cloth, action.keys, 'scene')
+    elif op == 'cut':
+        cut(cloth, action.from_x, action.from_y, action.to_x, action.to_y)
 
 
 def positions_of(cloth):
@@ -113,10 +116,10 @@ def simulate(cloth, frames, trace):
             trace.append(positions_of(cloth))
 
 
-def run(scene_json_text, frames=None, with_trace=False):
-    """Run a scene for `frames` frames (None: the scene's own `frames`); return the result as
-    JSON text (see README)."""
-    cloth = load(scene_json_text)
+def run(scene_json_text, frames=None, with_trace=False, panel=-1):
+    """Run a scene for `frames` frames (None: the scene's own `frames`), or its panel `panel`
+    of a compare list; return the result as JSON text (see README)."""
+    cloth = load(scene_json_text, panel)
     frames = frames_of(cloth, frames)
     start(cloth, frames, with_trace)
     trace = [] if with_trace else None

@@ -24,19 +24,26 @@ MAX_DEPTH = 32
 
 SOLVERS = ['jakobsen', 'xpbd']
 DEFAULT_SOLVER = 'xpbd'
-OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set']
+OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut']
 
 SCENE_KEYS = ['cols', 'rows', 'spacing', 'pins', 'gravity', 'dt', 'substeps', 'iterations',
               'damping', 'solver', 'actions', 'tethers', 'shear', 'compliance', 'tolerance',
-              'max_speed', 'sleep', 'cells', 'lines', 'name', 'frames']
-ACTION_KEYS = ['frame', 'op', 'vertex', 'to', 'scene']
+              'max_speed', 'sleep', 'cells', 'lines', 'name', 'frames', 'compare', 'tear']
+ACTION_KEYS = ['frame', 'op', 'vertex', 'to', 'scene', 'from']
 # The keys a `set` action may change on the running cloth: everything but what makes the grid
 # (cols, rows, spacing, shear, pins) and what is not physics (actions, frames, name).
 SETTABLE = ['gravity', 'dt', 'substeps', 'iterations', 'damping', 'solver', 'tethers',
-            'compliance', 'tolerance', 'max_speed', 'sleep', 'cells', 'lines']
+            'compliance', 'tolerance', 'max_speed', 'sleep', 'cells', 'lines', 'tear']
 # What the settings of a `set` are merged into: the scene's own keys but these, which a set
 # can neither change nor needs (actions would be parsed again at every set).
-NOT_SETTINGS = ['actions', 'pins', 'frames', 'name']
+NOT_SETTINGS = ['actions', 'pins', 'frames', 'name', 'compare']
+# `compare`: the page's compare mode, 2 to MAX_PANELS panels that run the scene side by side
+# under the same hands, each with some of these keys of its own. The physics ignores it but
+# for the panel a run asks for (parse_scene's `panel`).
+COMPARE_KEYS = ['solver', 'substeps', 'iterations', 'tethers', 'tolerance', 'compliance',
+                'shear', 'damping', 'cells', 'lines', 'sleep', 'max_speed', 'tear']
+MAX_TEAR = 1e6
+MAX_PANELS = 4
 
 
 class SceneError(Exception):
@@ -103,6 +110,7 @@ class Scene:
         self.sleep = False
         self.cells = False
         self.lines = False
+        self.tear = 0.0        # the strain past which an edge breaks; 0: no tearing
         self.actions = []      # list of Action, sorted by frame (stable)
         self.frames = -1       # the frames a recording ran for; -1: not given
         # The scene's JSON object without NOT_SETTINGS: what a `set` action merges its keys
@@ -121,6 +129,8 @@ class Action:
         self.to_x = to_x
         self.to_y = to_y
         self.keys = keys       # `set`: the scene keys it sets (a JSON object); else None
+        self.from_x = 0.0      # `cut`: the blade runs from (from_x, from_y) to (to_x, to_y)
+        self.from_y = 0.0
 
 
 def number(value, key, lo, hi, lo_open, what):
@@ -158,14 +168,52 @@ def point(value, key):
     return [x, y]
 
 
-def parse_scene(text):
-    """JSON text -> Scene, or SceneError naming the offending key."""
+def parse_scene(text, panel=-1):
+    """JSON text -> Scene, or SceneError naming the offending key. With `panel` >= 0, the
+    scene of that panel of its `compare` list: the scene with the panel's keys written in."""
     if too_deep(text, MAX_DEPTH):
         fail('scene: nested more than ' + str(MAX_DEPTH) + ' levels deep')
     parsed = parse_json(text)
     if parsed is None:
         fail('scene: not valid JSON')
-    return scene_from_object(parsed[1])
+    obj = parsed[1]
+    scene = scene_from_object(obj)
+    if panel < 0:
+        return scene
+    count = 0
+    if has_key(obj, 'compare'):
+        count = len(obj['compare'])
+    if count == 0:
+        fail('panel: the scene has no "compare" panels')
+    if not (panel < count and math.floor(panel) == panel):
+        fail('panel: must be from 1 to ' + str(count) + ' (the scene compares ' + str(count) +
+             ' panels)')
+    own = scene_from_object(copy_object(obj, ['compare', 'actions'], obj['compare'][panel]))
+    # The panel's settings, the scene's grid, pins and script.
+    own.actions = scene.actions
+    own.frames = scene.frames
+    return own
+
+
+def parse_compare(compare, obj):
+    """Check `compare`: 2 to MAX_PANELS objects of COMPARE_KEYS, each a valid scene when written
+    into this one."""
+    if kind_of(compare) != 'list' or len(compare) < 2 or len(compare) > MAX_PANELS:
+        fail('compare: must be a list of 2 to ' + str(MAX_PANELS) + ' objects of scene keys, one per panel')
+    for i in range(len(compare)):
+        where = 'compare[' + str(i) + ']'
+        entry = compare[i]
+        if kind_of(entry) != 'object':
+            fail(where + ': must be an object of scene keys (' + ', '.join(COMPARE_KEYS) + ')')
+        names = key_list(entry)
+        for j in range(len(names)):
+            if not known(COMPARE_KEYS, names[j]):
+                fail(where + '.' + shown(names[j]) + ': not a key a panel can have (' +
+                     ', '.join(COMPARE_KEYS) + ')')
+        try:
+            scene_from_object(copy_object(obj, ['compare', 'actions'], entry))
+        except SceneError as err:
+            fail(where + '.' + str(err))
 
 
 def scene_from_object(obj):
@@ -250,9 +298,15 @@ def scene_from_object(obj):
     if has_key(obj, 'name'):
         if kind_of(obj['name']) != 'string':
             fail('name: must be a string')
+    if has_key(obj, 'tear') and obj['tear'] is not None:
+        s.tear = number(obj['tear'], 'tear', 0.0, MAX_TEAR, True,
+                        'a strain greater than 0 (an edge breaks once (length - rest) / rest '
+                        'exceeds it), or null for no tearing')
     if has_key(obj, 'frames'):
         s.frames = integer(obj['frames'], 'frames', 0, MAX_FRAMES,
                            'an integer from 0 to 10000000 (the frames the scene was recorded for)')
+    if has_key(obj, 'compare'):
+        parse_compare(obj['compare'], obj)
     s.settings = copy_object(obj, NOT_SETTINGS, None)
     if has_key(obj, 'actions'):
         s.actions = parse_actions(obj['actions'], n, s.settings)
@@ -318,6 +372,23 @@ def parse_actions(actions, n, settings):
             continue
         if has_key(a, 'scene'):
             fail(where + '.scene: only set takes scene keys')
+        if op == 'cut':
+            # {"frame": f, "op": "cut", "from": [x0, y0], "to": [x1, y1]}: every edge whose
+            # segment crosses the blade's, where the cloth is at that moment, breaks.
+            if has_key(a, 'vertex'):
+                fail(where + '.vertex: a cut takes no vertex (it cuts what its blade crosses)')
+            for key in ['from', 'to']:
+                if not has_key(a, key):
+                    fail(where + '.' + key + ': missing (cut needs "from" and "to", [x, y] each)')
+            p0 = point(a['from'], where + '.from')
+            p1 = point(a['to'], where + '.to')
+            cut = Action(frame, op, -1, True, p1[0], p1[1], None)
+            cut.from_x = p0[0]
+            cut.from_y = p0[1]
+            parsed.append(cut)
+            continue
+        if has_key(a, 'from'):
+            fail(where + '.from: only cut takes "from"')
         if not has_key(a, 'vertex'):
             fail(where + '.vertex: missing')
         vertex = integer(a['vertex'], where + '.vertex', 0, n - 1,

@@ -14,9 +14,10 @@ import math
 from cloth.host import f64, i32
 from cloth.scene import SceneError
 from cloth.solve import integrate, sweep_jakobsen, sweep_xpbd, project_tethers, project_cells, \
-    solve_lines, relieve, relieve_cells, clear, max_motion2, copy_into
+    solve_lines, relieve, relieve_cells, clear, max_motion2, copy_into, mark_crossed, \
+    mark_overstretched
 from cloth.measure import deformation, nearest_vertex
-from cloth.tethers import find_anchors, list_fixed, over_reach
+from cloth.tethers import find_anchors, list_fixed, over_reach, label_pieces
 
 # When a vertex is let go (released, unpinned), the next step first takes out, without making
 # velocity, the stretch beyond RELIEVE_SLACK that this reveals: passes of solve.relieve until
@@ -49,6 +50,14 @@ SLEEP_TIME = 1.0
 CELL_STRENGTH = 0.25
 LINE_STEP = 0.01
 LINE_NEWTON = 2
+
+# Tearing (scene key `tear`): checked once a frame, after its steps, and at most
+# TEAR_PER_FRAME edges break in a frame, the most strained first. Once a frame because the
+# check is a pass over the edges (per step it would cost a fifth of a frame); a few at a time
+# because an edge that breaks hands its load to its neighbours, which the next frame's solve
+# spreads: a tear runs from where it starts, as cloth tears, instead of a whole row past the
+# limit snapping in one frame.
+TEAR_PER_FRAME = 4
 
 
 class Cloth:
@@ -90,6 +99,18 @@ class Cloth:
 
         self.build_edges(scene.shear)
         self.lam = f64(self.n_edges)
+        # Tearing and cutting remove edges (break_marked): until the first goes the grid is
+        # intact and the kernels skip every check of it. Then: which grid links (right of k,
+        # below k) and which cells remain, and the connected pieces.
+        self.intact = True
+        self.broken = 0
+        self.right_ok = i32(0)
+        self.down_ok = i32(0)
+        self.cell_ok = i32(0)
+        self.piece = i32(0)
+        self.stack = i32(0)
+        self.tear_q = f64(TEAR_PER_FRAME)
+        self.tear_e = i32(TEAR_PER_FRAME)
         # Set when a vertex is let go: the next step starts with `relieve`.
         self.relieve_pending = False
         # The last step's first sweep found every edge within tolerance (see step).
@@ -150,24 +171,11 @@ class Cloth:
         # Vertex -> edges adjacency (CSR): degree for the stress mean, neighbours for tethers.
         n = self.n_verts
         self.degree = i32(n)
-        for e in range(m):
-            self.degree[self.edge_a[e]] += 1
-            self.degree[self.edge_b[e]] += 1
         self.adj_start = i32(n + 1)
-        for k in range(n):
-            self.adj_start[k + 1] = self.adj_start[k] + self.degree[k]
-        fill = i32(n)
+        self.adj_fill = i32(n)
         self.adj_vertex = i32(2 * m)
         self.adj_rest = f64(2 * m)
-        for e in range(m):
-            a = self.edge_a[e]
-            b = self.edge_b[e]
-            self.adj_vertex[self.adj_start[a] + fill[a]] = b
-            self.adj_rest[self.adj_start[a] + fill[a]] = self.rest[e]
-            fill[a] += 1
-            self.adj_vertex[self.adj_start[b] + fill[b]] = a
-            self.adj_rest[self.adj_start[b] + fill[b]] = self.rest[e]
-            fill[b] += 1
+        adjacency(self)
 
     def set_edge(self, e, a, b, rest):
         self.edge_a[e] = a
@@ -205,6 +213,34 @@ class Cloth:
         return nearest(self, x, y, radius)
 
 
+def adjacency(cloth):
+    """degree[] and the CSR adjacency (adj_start, adj_vertex, adj_rest) of the edges there are
+    now, in the arrays made for the whole grid (edges only ever go)."""
+    n = cloth.n_verts
+    m = cloth.n_edges
+    degree = cloth.degree
+    start = cloth.adj_start
+    fill = cloth.adj_fill
+    for k in range(n):
+        degree[k] = 0
+        fill[k] = 0
+    for e in range(m):
+        degree[cloth.edge_a[e]] += 1
+        degree[cloth.edge_b[e]] += 1
+    start[0] = 0
+    for k in range(n):
+        start[k + 1] = start[k] + degree[k]
+    for e in range(m):
+        a = cloth.edge_a[e]
+        b = cloth.edge_b[e]
+        cloth.adj_vertex[start[a] + fill[a]] = b
+        cloth.adj_rest[start[a] + fill[a]] = cloth.rest[e]
+        fill[a] += 1
+        cloth.adj_vertex[start[b] + fill[b]] = a
+        cloth.adj_rest[start[b] + fill[b]] = cloth.rest[e]
+        fill[b] += 1
+
+
 # ---- the step -----------------------------------------------------------------------------
 #
 # Operations are module functions taking the cloth, not methods: a Transcrypt method call
@@ -224,9 +260,16 @@ def frame(cloth):
         cloth.stretch = 1.0
         if cloth.n_held > 0:
             cloth.stretch = min(MAX_STRETCH, over_reach(cloth.pos, cloth.held, cloth.fixed,
-                                                        cloth.n_fixed, cloth.cols, cloth.spacing))
+                                                        cloth.n_fixed, cloth.cols, cloth.spacing,
+                                                        cloth.intact, cloth.piece))
     for s in range(cloth.substeps):
         step(cloth)
+    # Tearing: a cloth whose last step converged has every edge within the tolerance, below
+    # any tear limit at least as large, and costs nothing to check.
+    if cloth.tear > 0.0 and not (cloth.converged and cloth.tolerance <= cloth.tear):
+        if mark_overstretched(cloth.pos, cloth.edge_a, cloth.edge_b, cloth.rest, cloth.n_edges,
+                              cloth.tear_limit2, TEAR_PER_FRAME, cloth.tear_q, cloth.tear_e) > 0:
+            break_marked(cloth)
     if cloth.use_sleep:
         settle(cloth)
 
@@ -264,7 +307,7 @@ def step(cloth):
                             cloth.stretch, RELIEVE_SLACK)
             if cloth.use_cells:
                 moved += relieve_cells(pos, cloth.prev, inv_mass, cloth.cols, cloth.rows,
-                                       RELIEVE_SLACK * cloth.spacing)
+                                       RELIEVE_SLACK * cloth.spacing, cloth.intact, cloth.cell_ok)
             if moved == 0:
                 break
     cloth.relieve_pending = False
@@ -283,7 +326,8 @@ def step(cloth):
     # Cells only while the cloth moves: one that converged last step is near its rest shape,
     # and a cloth at rest spends its step on one sweep (curtain 120x120: 25% fewer projections).
     if cloth.use_cells and not cloth.converged:
-        project_cells(pos, inv_mass, cloth.cols, cloth.rows, CELL_STRENGTH)
+        project_cells(pos, inv_mass, cloth.cols, cloth.rows, CELL_STRENGTH, cloth.intact,
+                      cloth.cell_ok)
         cloth.projections += (cloth.cols - 1) * (cloth.rows - 1)
     track = cloth.tolerance > 0.0
     for it in range(cloth.iterations):
@@ -318,11 +362,13 @@ def lines(cloth):
     h = cloth.spacing
     if rows > 1:
         solve_lines(cloth.pos, cloth.inv_mass, 0, cols, rows, h, cols, 1, cloth.tolerance,
-                    LINE_NEWTON, cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd)
+                    LINE_NEWTON, cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd,
+                    cloth.intact, cloth.down_ok)
         cloth.projections += cols * (rows - 1)
     if cols > 1:
         solve_lines(cloth.pos, cloth.inv_mass, 0, 1, cols, h, rows, cols, cloth.tolerance,
-                    LINE_NEWTON, cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd)
+                    LINE_NEWTON, cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd,
+                    cloth.intact, cloth.right_ok)
         cloth.projections += rows * (cols - 1)
 
 
@@ -362,6 +408,8 @@ def configure(cloth, scene):
         cloth.line_ny = f64(longest)
         cloth.line_cc = f64(longest)
         cloth.line_cd = f64(longest)
+    cloth.tear = scene.tear
+    cloth.tear_limit2 = (1.0 + scene.tear) * (1.0 + scene.tear)
     cloth.use_sleep = scene.sleep
     extent = max(longest - 1, 1) * cloth.spacing
     cloth.still_motion2 = SLEEP_MOTION * SLEEP_MOTION * extent * extent
@@ -393,6 +441,112 @@ def retune(cloth, scene):
     cloth.converged = False
     cloth.asleep = False
     cloth.still_frames = 0
+
+
+# ---- tearing and cutting -------------------------------------------------------------------
+
+
+def cut(cloth, x0, y0, x1, y1):
+    """Break every edge whose segment crosses the blade from (x0, y0) to (x1, y1), where the
+    cloth is now."""
+    for v in [x0, y0, x1, y1]:
+        if not (v > -1e9 and v < 1e9):
+            raise SceneError('cut: from and to must be finite and within 1e9 of the origin')
+    if mark_crossed(cloth.pos, cloth.edge_a, cloth.edge_b, cloth.rest, cloth.n_edges,
+                    x0, y0, x1, y1) > 0:
+        break_marked(cloth)
+
+
+def break_marked(cloth):
+    """Remove the edges marked broken (rest < 0), keeping the others in their order, so that a
+    broken edge costs nothing afterwards; then what follows from the new topology: the grid
+    links and cells that remain (for the line solves and the cells), the adjacency and the
+    pieces, the anchors of the tethers (a piece cut from every fixed vertex has none, and no
+    tether holds it), and a wake-up. A piece that has just lost its last fixed vertex falls
+    from here: its vertices keep their velocity, with `prev` moved by a h^2 / 2 as rest_at
+    does, which makes its fall exact (from rest: g t^2 / 2)."""
+    n = cloth.n_verts
+    cols = cloth.cols
+    if cloth.intact:
+        cloth.intact = False
+        cloth.right_ok = i32(n)
+        cloth.down_ok = i32(n)
+        cells = (cols - 1) * (cloth.rows - 1)
+        cloth.cell_ok = i32(cells if cells > 0 else 0)
+        cloth.piece = i32(n)
+        cloth.stack = i32(n)
+        cloth.scratch = i32(n)
+        cloth.falling = i32(n)
+        cloth.was_falling = i32(n)
+    # Which vertices were falling before (over the edges that were there, with the fixed set
+    # as it is now: a person may have pinned or let go of a piece since the last break).
+    pieces(cloth)
+    for k in range(n):
+        cloth.was_falling[k] = cloth.falling[k]
+    m = cloth.n_edges
+    kept = 0
+    for e in range(m):
+        if cloth.rest[e] < 0.0:
+            continue
+        cloth.edge_a[kept] = cloth.edge_a[e]
+        cloth.edge_b[kept] = cloth.edge_b[e]
+        cloth.rest[kept] = cloth.rest[e]
+        kept += 1
+    cloth.broken += m - kept
+    cloth.n_edges = kept
+    adjacency(cloth)
+    mark_links(cloth)
+    pieces(cloth)
+    falling = cloth.falling
+    was = cloth.was_falling
+    for k in range(n):
+        if falling[k] == 1 and was[k] == 0:
+            cloth.prev[k + k] += 0.5 * cloth.ax
+            cloth.prev[k + k + 1] += 0.5 * cloth.ay
+    cloth.anchors_stale = True
+    cloth.converged = False
+    cloth.asleep = False
+    cloth.still_frames = 0
+
+
+def mark_links(cloth):
+    """right_ok[k] / down_ok[k]: the grid link from k to its right / lower neighbour remains;
+    cell_ok: all four sides of a cell remain."""
+    n = cloth.n_verts
+    cols = cloth.cols
+    rows = cloth.rows
+    for k in range(n):
+        cloth.right_ok[k] = 0
+        cloth.down_ok[k] = 0
+    for e in range(cloth.n_edges):
+        a = cloth.edge_a[e]
+        b = cloth.edge_b[e]
+        if b == a + cols:
+            cloth.down_ok[a] = 1
+        elif b == a + 1:
+            cloth.right_ok[a] = 1
+    for r in range(rows - 1):
+        for c in range(cols - 1):
+            a = r * cols + c
+            ok = 0
+            if cloth.right_ok[a] == 1 and cloth.down_ok[a] == 1 and \
+                    cloth.right_ok[a + cols] == 1 and cloth.down_ok[a + 1] == 1:
+                ok = 1
+            cloth.cell_ok[r * (cols - 1) + c] = ok
+
+
+def pieces(cloth):
+    """Label the connected pieces, and mark the vertices of pieces with no fixed vertex."""
+    n = cloth.n_verts
+    count = label_pieces(n, cloth.adj_start, cloth.adj_vertex, cloth.piece, cloth.stack)
+    held_by = cloth.scratch   # whether each piece has a fixed vertex
+    for p in range(count):
+        held_by[p] = 0
+    for k in range(n):
+        if cloth.inv_mass[k] == 0.0:
+            held_by[cloth.piece[k]] = 1
+    for k in range(n):
+        cloth.falling[k] = 1 - held_by[cloth.piece[k]]
 
 
 # ---- holding, pinning ---------------------------------------------------------------------

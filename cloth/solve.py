@@ -159,7 +159,7 @@ def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, alpha, track):
     return worst
 
 
-def project_cells(pos, inv_mass, cols, rows, strength):
+def project_cells(pos, inv_mass, cols, rows, strength, intact, cell_ok):
     """Pull every cell toward a parallelogram: for the cell A = (r, c), B = (r, c+1),
     C = (r+1, c+1), D = (r+1, c), the linear constraint A + C - B - D = 0, of which each pass
     removes the fraction `strength` (each corner moving by its share w_i / sum w).
@@ -182,6 +182,8 @@ def project_cells(pos, inv_mass, cols, rows, strength):
     for r in range(rows - 1):
         base = r * cols
         for c in range(cols - 1):
+            if not intact and cell_ok[base - r + c] == 0:
+                continue    # a cell with a broken side is no longer a cell
             a = base + c
             b = a + 1
             d = a + cols
@@ -210,7 +212,7 @@ def project_cells(pos, inv_mass, cols, rows, strength):
 
 
 def solve_lines(pos, inv_mass, first, stride, nodes, rest, lines, line_step, tolerance, newton,
-                nx, ny, cc, cd):
+                nx, ny, cc, cd, intact, link_ok):
     """Solve every edge of a grid line at once: for each of `lines` lines (node i of line l is
     first + l * line_step + i * stride, `nodes` nodes, every link `rest` long), the linearised
     constraints len_i - rest = 0 of the line's links form a tridiagonal system in the
@@ -220,6 +222,9 @@ def solve_lines(pos, inv_mass, first, stride, nodes, rest, lines, line_step, tol
     moves by w_i (n_i dl_i - n_i-1 dl_i-1). That is one Newton step. A line none of whose links
     is off by more than `tolerance` (a fraction of rest) is left alone; one whose worst link is
     off by more than sqrt(tolerance) is solved again, up to `newton` steps in all. nx, ny, cc, cd are work arrays of `nodes` doubles.
+    A torn cloth (not `intact`) has broken links (link_ok[a] == 0 for the link from node a):
+    such a link has no direction and no error, so its multiplier is 0 and its neighbours'
+    coupling to it vanishes: the line is solved as the chains between its breaks.
     Two passes per Newton step: one computes the links' directions and errors and eliminates
     forward (the super-diagonal of link i is the sub-diagonal of link i + 1, known one link
     later); the other substitutes back from the last link, moving each link's ends as it goes.
@@ -253,7 +258,7 @@ def solve_lines(pos, inv_mass, first, stride, nodes, rest, lines, line_step, tol
                 ux = 0.0
                 uy = 0.0
                 rhs = 0.0
-                if length >= 1e-15:
+                if length >= 1e-15 and (intact or link_ok[a] == 1):
                     ux = dx / length
                     uy = dy / length
                     rhs = length - rest
@@ -304,6 +309,68 @@ def solve_lines(pos, inv_mass, first, stride, nodes, rest, lines, line_step, tol
                 i -= 1
             if worst <= once:
                 break
+
+
+def mark_crossed(pos, edge_a, edge_b, rest, m, px, py, qx, qy):
+    """Mark (rest = -1) every edge whose segment crosses the blade P -> Q, where the cloth is
+    now; returns how many. Crossing is decided by the signs of four orientations (exact
+    + - * on the same doubles in both runtimes): the edge's ends strictly on either side of the
+    blade's line, and the blade's ends on either side of the edge's line, or one on it (a blade
+    that stops on an edge cuts it). So an edge that only touches the blade, or lies along it,
+    is not crossed, and a blade of no length crosses nothing."""
+    ux = qx - px
+    uy = qy - py
+    count = 0
+    for e in range(m):
+        ia = edge_a[e] + edge_a[e]
+        ib = edge_b[e] + edge_b[e]
+        ax = pos[ia]
+        ay = pos[ia + 1]
+        bx = pos[ib]
+        by = pos[ib + 1]
+        d1 = ux * (ay - py) - uy * (ax - px)
+        d2 = ux * (by - py) - uy * (bx - px)
+        if not ((d1 > 0.0 and d2 < 0.0) or (d1 < 0.0 and d2 > 0.0)):
+            continue
+        vx = bx - ax
+        vy = by - ay
+        d3 = vx * (py - ay) - vy * (px - ax)
+        d4 = vx * (qy - ay) - vy * (qx - ax)
+        if (d3 > 0.0 and d4 > 0.0) or (d3 < 0.0 and d4 < 0.0):
+            continue
+        rest[e] = -1.0
+        count += 1
+    return count
+
+
+def mark_overstretched(pos, edge_a, edge_b, rest, m, limit2, most, best_q, best_e):
+    """Mark (rest = -1) the `most` edges strained most past the limit: (len / rest)^2 >
+    limit2 = (1 + tear)^2, no square root. Returns how many. best_q / best_e (`most` long)
+    keep the worst ones seen, most strained first (an insertion; `most` is small)."""
+    found = 0
+    for e in range(m):
+        ia = edge_a[e] + edge_a[e]
+        ib = edge_b[e] + edge_b[e]
+        dx = pos[ib] - pos[ia]
+        dy = pos[ib + 1] - pos[ia + 1]
+        r = rest[e]
+        q = (dx * dx + dy * dy) / (r * r)
+        if q <= limit2:
+            continue
+        if found < most:
+            found += 1
+        elif q <= best_q[found - 1]:
+            continue
+        i = found - 1
+        while i > 0 and best_q[i - 1] < q:
+            best_q[i] = best_q[i - 1]
+            best_e[i] = best_e[i - 1]
+            i -= 1
+        best_q[i] = q
+        best_e[i] = e
+    for i in range(found):
+        rest[best_e[i]] = -1.0
+    return found
 
 
 def project_tethers(pos, prev, inv_mass, anchor, tether, n, stretch):
@@ -416,7 +483,7 @@ def relieve(pos, prev, inv_mass, edge_a, edge_b, rest, m, anchor, tether, n, str
     return moved
 
 
-def relieve_cells(pos, prev, inv_mass, cols, rows, slack):
+def relieve_cells(pos, prev, inv_mass, cols, rows, slack, intact, cell_ok):
     """The cells' part of `relieve`: every cell more than `slack` (a length) from a
     parallelogram is projected onto one, with `prev` moved by the same amount, so that the
     shape a hand forced on the cloth (a vertex dragged 100 m away) goes when it lets go without
@@ -426,6 +493,8 @@ def relieve_cells(pos, prev, inv_mass, cols, rows, slack):
     for r in range(rows - 1):
         base = r * cols
         for c in range(cols - 1):
+            if not intact and cell_ok[base - r + c] == 0:
+                continue
             a = base + c
             b = a + 1
             d = a + cols

@@ -69,7 +69,7 @@ def list_fixed(inv_mass, n, fixed):
     return count
 
 
-def over_reach(pos, held, fixed, n_fixed, cols, spacing):
+def over_reach(pos, held, fixed, n_fixed, cols, spacing, intact, piece):
     """How far the hands have pulled the cloth beyond its reach: the largest ratio, at least
     1, of a held vertex's distance from another fixed vertex to the two's rest distance.
 
@@ -90,8 +90,8 @@ def over_reach(pos, held, fixed, n_fixed, cols, spacing):
         y = pos[k + k + 1]
         for i in range(n_fixed):
             f = fixed[i]
-            if f == k:
-                continue
+            if f == k or (not intact and piece[f] != piece[k]):
+                continue    # a fixed vertex of another piece is not in this one's reach
             dr = f // cols - row
             dc = f % cols - col
             rest2 = (dr * dr + dc * dc) * h2
@@ -101,6 +101,32 @@ def over_reach(pos, held, fixed, n_fixed, cols, spacing):
             if d2 > worst * worst * rest2:
                 worst = math.sqrt(d2 / rest2)
     return worst
+
+
+def label_pieces(n, adj_start, adj_vertex, piece, stack):
+    """piece[k]: the connected piece of vertex k over the remaining edges (numbered from 0 in
+    vertex order); returns how many. A depth-first walk with an explicit stack."""
+    for k in range(n):
+        piece[k] = -1
+    count = 0
+    for k in range(n):
+        if piece[k] >= 0:
+            continue
+        piece[k] = count
+        top = 0
+        stack[0] = k
+        top = 1
+        while top > 0:
+            top -= 1
+            v = stack[top]
+            for j in range(adj_start[v], adj_start[v + 1]):
+                u = adj_vertex[j]
+                if piece[u] < 0:
+                    piece[u] = count
+                    stack[top] = u
+                    top += 1
+        count += 1
+    return count
 
 
 def sift_up(heap_d, heap_v, i):
