@@ -111,6 +111,9 @@ def configs():
     out.append(('default -cells -lines', 'default variants', {'cells': False, 'lines': False}))
     out.append(('default compliance=1e-7', 'default variants', {'compliance': 1e-7}))
     out.append(('default +sleep', 'default variants', {'sleep': True}))
+    # Tearing's check, at a limit no scene here reaches (so the same work otherwise): what the
+    # check costs on its own, against the `default` row (issue #15: at most 5% of a frame).
+    out.append(('default tear=10', 'default variants', {'tear': 10.0}))
     return out
 
 
@@ -127,8 +130,8 @@ def base_scene(kind, n):
 
 
 def scene_actions(kind, n, frames):
-    """The scripted actions, as the scene JSON spells them (the bench applies them the way
-    cloth.api.simulate does: before frame f, every action whose frame is <= f)."""
+    """The scripted actions, as the scene JSON spells them (webgl/measure.js applies them the
+    way cloth.api.simulate does: those of frame 0 first, those of frame f after frame f)."""
     if kind == 'corners':
         return [{'frame': 0, 'op': 'grab', 'vertex': n - 1, 'to': [CORNER_X, 0.0]},
                 {'frame': 0, 'op': 'pin', 'vertex': n - 1},
@@ -153,279 +156,9 @@ def scene_actions(kind, n, frames):
 
 # ---- the page side ---------------------------------------------------------------------------
 
-HARNESS_JS = r"""
-(() => {
-  const B = window.__bench = {groups: {}};
-
-  function describe(cl) {
-    return {solver: cl.use_xpbd ? 'xpbd' : 'jakobsen', substeps: cl.substeps,
-            iterations: cl.iterations, tethers: !!cl.use_tethers, tolerance: cl.tolerance,
-            shear: !!cl.scene.shear, compliance: cl.scene.compliance, sleep: !!cl.use_sleep,
-            cells: !!cl.use_cells, lines: !!cl.use_lines,
-            n_verts: cl.n_verts, n_edges: cl.n_edges};
-  }
-
-  function applyActions(st, actions) {
-    const cl = st.cloth;
-    while (st.next < actions.length && actions[st.next].frame <= st.frame) {
-      const a = actions[st.next++];
-      if (a.op === 'grab') cl.grab(a.vertex, a.to[0], a.to[1]);
-      else if (a.op === 'move') cl.move(a.vertex, a.to[0], a.to[1]);
-      else if (a.op === 'release') cl.release(a.vertex);
-      else if (a.op === 'pin') cl.pin(a.vertex);
-      else if (a.op === 'unpin') cl.unpin(a.vertex);
-    }
-  }
-
-  function advance(st, actions, frames) {
-    const cl = st.cloth;
-    for (let i = 0; i < frames; i++) {
-      if (st.next < actions.length) applyActions(st, actions);
-      cl.frame();
-      st.frame++;
-    }
-  }
-
-  function rmsError(pos, ref, n) {
-    let s = 0;
-    for (let k = 0; k < n; k++) {
-      const dx = pos[2 * k] - ref[2 * k], dy = pos[2 * k + 1] - ref[2 * k + 1];
-      s += dx * dx + dy * dy;
-    }
-    return Math.sqrt(s / n);
-  }
-
-  function restGrid(cl) {
-    const ref = new Float64Array(2 * cl.n_verts);
-    for (let r = 0; r < cl.rows; r++)
-      for (let c = 0; c < cl.cols; c++) {
-        const k = r * cl.cols + c;
-        ref[2 * k] = c * cl.spacing;
-        ref[2 * k + 1] = -r * cl.spacing;
-      }
-    return ref;
-  }
-
-  // A group: every configuration of one scene at one size, plus its reference.
-  B.setup = function (key, scenes, actions) {
-    const g = {states: [], actions: actions, refStatic: null, refSnaps: {}, ref: null};
-    for (const text of scenes) {
-      g.states.push({cloth: clothCore.load(text), frame: 0, next: 0});
-    }
-    B.groups[key] = g;
-    return g.states.map(st => describe(st.cloth));
-  };
-
-  B.exactRest = function (key) {
-    const g = B.groups[key];
-    g.refStatic = restGrid(g.states[0].cloth);
-  };
-
-  // An exact reference computed in CPython (cloth/reference.py): [x0, y0, x1, y1, ...].
-  B.exactRef = function (key, flat) {
-    B.groups[key].refStatic = Float64Array.from(flat);
-  };
-
-  function maxError(pos, ref, n) {
-    let worst = 0;
-    for (let k = 0; k < n; k++) {
-      const dx = pos[2 * k] - ref[2 * k], dy = pos[2 * k + 1] - ref[2 * k + 1];
-      worst = Math.max(worst, dx * dx + dy * dy);
-    }
-    return Math.sqrt(worst);
-  }
-
-  // The reference, and optionally a check run of it with half the substeps (`checkText`).
-  B.refSetup = function (key, text, checkText, actions) {
-    const g = B.groups[key];
-    g.ref = {cloth: clothCore.load(text), frame: 0, next: 0, actions: actions};
-    g.check = checkText ? {cloth: clothCore.load(checkText), frame: 0, next: 0} : null;
-    g.checkErr = [];
-    return describe(g.ref.cloth);
-  };
-
-  // Advance the reference; keep a copy of its positions at the listed frames (and there,
-  // the check run's distance from it).
-  B.refAdvance = function (key, frames, snapFrames) {
-    const g = B.groups[key], st = g.ref, want = new Set(snapFrames);
-    for (let i = 0; i < frames; i++) {
-      advance(st, st.actions, 1);
-      if (g.check) advance(g.check, st.actions, 1);
-      if (want.has(st.frame)) {
-        g.refSnaps[st.frame] = Float64Array.from(st.cloth.pos);
-        if (g.check) g.checkErr.push(rmsError(g.check.cloth.pos, st.cloth.pos, st.cloth.n_verts));
-      }
-    }
-    return st.frame;
-  };
-
-  B.refCheck = function (key) { return B.groups[key].checkErr; };
-
-  B.refStrain = function (key) {
-    const cl = B.groups[key].ref.cloth;
-    cl.measure();
-    return {rms_strain: cl.rms_strain, max_strain: cl.max_strain};
-  };
-
-  B.warm = function (key, frames) {
-    const g = B.groups[key];
-    for (const st of g.states) advance(st, g.actions, frames);
-  };
-
-  // One repetition: a timed batch of `frames` frames per configuration, in the given order;
-  // then each one's strain and position error (untimed).
-  B.round = function (key, order, frames) {
-    const g = B.groups[key], out = [];
-    for (const i of order) {
-      const st = g.states[i], cl = st.cloth;
-      const p0 = cl.projections;
-      const t0 = performance.now();
-      advance(st, g.actions, frames);
-      const t1 = performance.now();
-      const proj = cl.projections - p0;
-      cl.measure();
-      const ref = g.refStatic || g.refSnaps[st.frame];
-      out.push({i: i, ms: t1 - t0, proj: proj, frame: st.frame,
-                rms_strain: cl.rms_strain, max_strain: cl.max_strain,
-                err: ref ? rmsError(cl.pos, ref, cl.n_verts) : null,
-                max_err: ref ? maxError(cl.pos, ref, cl.n_verts) : null});
-    }
-    return out;
-  };
-
-  B.drop = function (key) { delete B.groups[key]; };
-
-  // ---- the speed-of-light yardstick: the seed's method, hand-written --------------------
-  function kernelFrames(s, frames) {
-    const pos = s.pos, prev = s.prev, w = s.w, ea = s.ea, eb = s.eb, rest = s.rest;
-    const n = s.n, m = s.m, keep = s.keep, ax = s.ax, ay = s.ay, iters = s.iters;
-    for (let f = 0; f < frames; f++) {
-      for (let k = 0; k < n; k++) {
-        if (w[k] === 0) continue;
-        const i = k + k;
-        const x = pos[i], y = pos[i + 1];
-        pos[i] = x + (x - prev[i]) * keep + ax;
-        pos[i + 1] = y + (y - prev[i + 1]) * keep + ay;
-        prev[i] = x;
-        prev[i + 1] = y;
-      }
-      for (let it = 0; it < iters; it++) {
-        for (let e = 0; e < m; e++) {
-          const a = ea[e], b = eb[e];
-          const wa = w[a], wb = w[b], ww = wa + wb;
-          if (ww === 0) continue;
-          const ia = a + a, ib = b + b;
-          const dx = pos[ib] - pos[ia], dy = pos[ib + 1] - pos[ia + 1];
-          const d2 = dx * dx + dy * dy;
-          if (d2 < 1e-30) continue;
-          const len = Math.sqrt(d2);
-          const q = (len - rest[e]) / len / ww;
-          const sa = q * wa, sb = q * wb;
-          pos[ia] += dx * sa;
-          pos[ia + 1] += dy * sa;
-          pos[ib] -= dx * sb;
-          pos[ib + 1] -= dy * sb;
-        }
-      }
-    }
-  }
-
-  B.solSetup = function (text) {
-    const core = clothCore.load(text);
-    const c = clothCore.load(text);
-    if (c.substeps !== 1 || c.use_xpbd || c.use_tethers) throw new Error('not the seed method');
-    const s = {pos: Float64Array.from(c.pos), prev: Float64Array.from(c.prev),
-               w: Float64Array.from(c.inv_mass), ea: Int32Array.from(c.edge_a),
-               eb: Int32Array.from(c.edge_b), rest: Float64Array.from(c.rest),
-               n: c.n_verts, m: c.n_edges, keep: c.keep, ax: c.ax, ay: c.ay,
-               iters: c.iterations};
-    B.sol = {core: core, kernel: s};
-    return describe(core);
-  };
-
-  // Time `frames` frames of the core and of the kernel, in the given order.
-  B.solRound = function (frames, kernelFirst) {
-    const t = {};
-    const runCore = () => {
-      const t0 = performance.now();
-      for (let i = 0; i < frames; i++) B.sol.core.frame();
-      t.core = performance.now() - t0;
-    };
-    const runKernel = () => {
-      const t0 = performance.now();
-      kernelFrames(B.sol.kernel, frames);
-      t.kernel = performance.now() - t0;
-    };
-    if (kernelFirst) { runKernel(); runCore(); } else { runCore(); runKernel(); }
-    return t;
-  };
-
-  B.solCompare = function () {
-    const a = B.sol.core.pos, b = B.sol.kernel.pos;
-    let same = a.length === b.length, maxd = 0;
-    for (let i = 0; i < a.length; i++) {
-      if (a[i] !== b[i]) same = false;
-      const d = Math.abs(a[i] - b[i]);
-      if (d > maxd) maxd = d;
-    }
-    return {identical: same, max_abs_diff: maxd};
-  };
-  // ---- gestures: a hand pulling beyond reach, letting go, flicking -------------------------
-  // Speeds are velocities, (pos - prev) / h at the end of a frame, not distances per frame:
-  // a cloth relieved of stretch jumps back to shape without moving fast.
-  function fastest(cl) {
-    let v = 0;
-    for (let k = 0; k < cl.n_verts; k++) {
-      const s = Math.hypot(cl.pos[2 * k] - cl.prev[2 * k], cl.pos[2 * k + 1] - cl.prev[2 * k + 1]);
-      if (s > v) v = s;
-    }
-    return v / cl.h;
-  }
-
-  // Hang, grab vertex k, pull it by (dx, dy) over a second, hold a second, let go.
-  B.overpull = function (text, k, dx, dy) {
-    const cl = clothCore.load(text), ops = clothCore.ops(cl);
-    for (let f = 0; f < 120; f++) ops.frame();
-    const x0 = cl.pos[2 * k], y0 = cl.pos[2 * k + 1];
-    ops.grab(k, x0, y0);
-    let held = 0;
-    for (let f = 0; f < 120; f++) {
-      const t = Math.min(1, f / 60);
-      ops.move(k, x0 + dx * t, y0 + dy * t);
-      ops.frame();
-      ops.measure();
-      held = Math.max(held, cl.max_strain);
-    }
-    ops.release(k);
-    let after = 0, over5 = 0;
-    for (let f = 0; f < 30; f++) {
-      ops.frame();
-      after = Math.max(after, fastest(cl));
-      let n5 = 0;
-      for (let i = 0; i < cl.n_verts; i++) {
-        if (Math.hypot(cl.pos[2 * i] - cl.prev[2 * i], cl.pos[2 * i + 1] - cl.prev[2 * i + 1]) / cl.h > 5) n5++;
-      }
-      over5 = Math.max(over5, n5);
-    }
-    return {held_max_strain: held, after_fastest: after, after_over_5: over5};
-  };
-
-  // A free cloth in zero gravity, vertex k dragged along x at `speed` for 1/3 s and let go:
-  // the centre of mass's speed over the next half second.
-  B.flick = function (text, k, speed) {
-    const cl = clothCore.load(text), ops = clothCore.ops(cl);
-    const x0 = cl.pos[2 * k], y0 = cl.pos[2 * k + 1];
-    ops.grab(k, x0, y0);
-    for (let f = 1; f <= 20; f++) { ops.move(k, x0 + speed * f / 60, y0); ops.frame(); }
-    ops.release(k);
-    const cx = () => { let s = 0; for (let i = 0; i < cl.n_verts; i++) s += cl.pos[2 * i]; return s / cl.n_verts; };
-    const c0 = cx();
-    for (let f = 0; f < 30; f++) ops.frame();
-    return (cx() - c0) / 0.5;
-  };
-  return true;
-})()
-"""
+# The benchmark's JS: bench/harness.js, on webgl/measure.js (shipped in the page: the code the
+# page's compare mode measures with).
+HARNESS = os.path.join(ROOT, 'bench', 'harness.js')
 
 
 # ---- running ---------------------------------------------------------------------------------
@@ -483,7 +216,10 @@ def open_page(p, progress):
         window.clothApp.setPaused(true);
       window.requestAnimationFrame = function () { return 0; };
     }""")
-    page.evaluate(HARNESS_JS)
+    if not page.evaluate("() => typeof window.clothMeasure === 'object'"):
+        browser.close()
+        raise BenchError('dist/index.html has no window.clothMeasure; rebuild it with `python build.py`')
+    page.add_script_tag(path=HARNESS)
     progress('Chromium %s (%s), page %s' % (browser.version, kwargs.get('executable_path',
              'Playwright build'), os.path.relpath(DIST, ROOT)))
     return browser, page
@@ -512,7 +248,7 @@ def run_group(page, kind, n, mode, progress):
         if actions:
             s['actions'] = actions
         scenes.append(json.dumps(s))
-    described = page.evaluate('([k, s, a]) => __bench.setup(k, s, a)', [key, scenes, actions])
+    described = page.evaluate('([k, s]) => __bench.setup(k, s)', [key, scenes])
     info = {'scene': kind, 'size': n, 'batch_frames': batch, 'warmup_frames': warmup,
             'reps': reps, 'actions': len(actions)}
 
@@ -535,8 +271,8 @@ def run_group(page, kind, n, mode, progress):
         check = None
         if n <= REF_CHECK_MAX_N:
             check = json.dumps(dict(ref, substeps=ref['substeps'] // 2))
-        desc = page.evaluate('([k, t, c, a]) => __bench.refSetup(k, t, c, a)',
-                             [key, json.dumps(ref), check, actions])
+        desc = page.evaluate('([k, t, c]) => __bench.refSetup(k, t, c)',
+                             [key, json.dumps(ref), check])
         step = max(1, int(400000.0 / (n * n)))
         for done, k in chunked(ref_frames, step):
             progress('%s %dx%d: reference (%s) frame %d/%d' % (
@@ -592,6 +328,27 @@ def run_group(page, kind, n, mode, progress):
         r['error_vs_seed'] = (ratio(r['rms_error'], seed['rms_error'])
                               if r['rms_error'] is not None else None)
     return rows, info
+
+
+def compare_cost(page, n, reps, progress):
+    """Compare mode's cost: 1 to 4 panels of the default on the n x n curtain, stepped one
+    after the other by webgl/measure.js as the page's loop steps them; ms per frame of them all
+    against one panel, in rotated order each repetition. About N times one is expected; the
+    table shows what it is (no assertion on time)."""
+    s = base_scene('curtain', n)
+    page.evaluate('([t, m]) => __bench.panelsSetup(t, m)', [json.dumps(s), 4])
+    frames = max(5, int(math.ceil(20.0 * (60.0 / n) ** 2)))
+    page.evaluate('([c, f]) => __bench.panelsRound(c, f)', [4, 240])        # warm, all alike
+    samples = {c: [] for c in range(1, 5)}
+    for r in range(reps):
+        progress('compare mode %dx%d: round %d/%d' % (n, n, r + 1, reps))
+        for j in range(4):
+            c = 1 + (r + j) % 4
+            samples[c].append(page.evaluate('([c, f]) => __bench.panelsRound(c, f)', [c, frames]) / frames)
+    one = statistics.median(samples[1])
+    rows = [{'panels': c, 'ms_per_frame': statistics.median(samples[c]),
+             'vs_one': ratio(statistics.median(samples[c]), one)} for c in range(1, 5)]
+    return {'scene': 'curtain', 'size': n, 'frames_per_batch': frames, 'reps': reps, 'rows': rows}
 
 
 def speed_of_light(page, n, reps, progress):
@@ -658,6 +415,8 @@ def setting(d):
         parts.append('compliance %g' % d['compliance'])
     if d.get('sleep'):
         parts.append('sleep')
+    if d.get('tear'):
+        parts.append('tear %g' % d['tear'])
     return ', '.join(parts)
 
 
@@ -771,6 +530,31 @@ def markdown(result):
             fmt(d['rms_strain']), fmt(d['rms_error']), fmt(d['max_error']),
             fmt_ratio(d['error_vs_seed'])))
     lines.append('')
+    tear = []
+    for g in result['groups']:
+        rows = [r for r in result['rows'] if r['scene'] == g['scene'] and r['size'] == g['size']]
+        d = next((r for r in rows if r['config'] == 'default'), None)
+        t = next((r for r in rows if r['config'] == 'default tear=10'), None)
+        if d and t and finite(d['ms_per_frame']) and d['ms_per_frame'] > 0:
+            tear.append('%s %dx%d %+.1f%%%s' % (
+                g['scene'], g['size'], g['size'], 100.0 * (t['ms_per_frame'] / d['ms_per_frame'] - 1.0),
+                '' if t['projections_per_frame'] == d['projections_per_frame'] else
+                ' (projections differ!)'))
+    if tear:
+        lines.append('Tearing\'s check (issue #15: at most 5%% of a frame of the default): `default '
+                     'tear=10` (a limit nothing reaches, so the same work but the check) against '
+                     '`default`, ms/frame: %s. Noise between two rows of the same work is of the '
+                     'same order on these machines.' % '; '.join(tear))
+        lines.append('')
+    cm = result.get('compare_mode')
+    if cm:
+        lines.append('Compare mode (the page runs N panels under the same hands; the default on the '
+                     'curtain %dx%d, stepped by webgl/measure.js as the page steps them): %s.' % (
+                         cm['size'], cm['size'], '; '.join(
+                             '%d panel%s %s ms/frame (%s one)' % (
+                                 r['panels'], '' if r['panels'] == 1 else 's', fmt(r['ms_per_frame']),
+                                 fmt_ratio(r['vs_one'])) for r in cm['rows'])))
+        lines.append('')
     lines.append('Plots: `bench.svg` (RMS position error against ms/frame) and `bench-strain.svg` '
                  '(RMS strain against ms/frame), log-log, one line per method family.')
     for g in result['groups']:
@@ -1008,9 +792,12 @@ def bench(quick, progress):
             sol = speed_of_light(page, sol_n, mode['sol_reps'], progress)
             progress('speed of light: core / hand-written JS = %.3f (bit-identical: %s)' % (
                 sol['ratio'], sol['bit_identical']))
+            panels = compare_cost(page, sol_n, mode['sol_reps'], progress)
+            progress('compare mode: %s' % ', '.join('%d panels %s' % (r['panels'], fmt_ratio(r['vs_one']))
+                                                    for r in panels['rows']))
         finally:
             browser.close()
-    return rows, groups, sol, chromium
+    return rows, groups, sol, panels, chromium
 
 
 def main(argv=None):
@@ -1038,7 +825,7 @@ def main(argv=None):
         sys.stdout.write(md)
         return 0
     try:
-        rows, groups, sol, chromium = bench(args.quick, progress)
+        rows, groups, sol, panels, chromium = bench(args.quick, progress)
     except BenchError as err:
         sys.stderr.write('error: %s\n' % err)
         return 1
@@ -1051,7 +838,8 @@ def main(argv=None):
             'reps': MODES[mode]['reps'], 'warmup_frames': MODES[mode]['warmup'],
             'damping': DAMPING, 'width': WIDTH, 'seed_row': SEED,
             'seconds': progress.elapsed()}
-    result = {'meta': meta, 'speed_of_light': sol, 'groups': groups, 'rows': rows}
+    result = {'meta': meta, 'speed_of_light': sol, 'compare_mode': panels, 'groups': groups,
+              'rows': rows}
     result['targets'] = check_targets(rows, args.quick)
     md = markdown(result)
     suffix = QUICK_SUFFIX if args.quick else ''

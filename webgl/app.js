@@ -1,5 +1,5 @@
-// The app: owns the current Cloth, runs the loop, wires renderer, input and UI,
-// and publishes the test seam window.clothApp.
+// The app: owns the panels' cloths, runs the loop, wires renderer, input, recorder, charts
+// and UI, and publishes the test seam window.clothApp.
 //
 // Loop: the core advances a fixed dt per frame(); the wall clock appears only
 // here. Elapsed time goes into an accumulator, capped at MAX_GAP (a tab switch
@@ -17,6 +17,11 @@
 // Replay: a scene that says how many frames it was recorded for (`frames`) plays up to
 // that frame and stops there, paused. A person who takes over before the end (a gesture, a
 // setting) cuts the script at that frame and is recorded from there on.
+//
+// Panels: a scene with a `compare` list runs once per entry, side by side (compare.js), each
+// panel its own cloth with the entry's settings written in, all under the same hands: every
+// gesture, in any panel, happens to the same vertex at the same world position in each panel,
+// in the same frame, and is recorded once. A scene without one is a single panel.
 'use strict';
 
 (function () {
@@ -27,24 +32,31 @@
   const READOUT_MS = 250;      // readout refresh period
   const EMA = 0.1;             // smoothing of the timing readouts
 
-  const core = window.clothCore, scenes = window.clothScenes;
+  const core = window.clothCore, scenes = window.clothScenes, measure = window.clothMeasure;
   const canvas = document.getElementById('view');
   const options = window.clothOptions.parse(window.location.search, scenes.PRESETS);
   const own = window.clothOptions.own;
 
+  // A panel: {cloth, run (measure.js: ops, script index, batch timing), draw (its renderer
+  // panel), simMs, clamped}. s.cloth is the first panel's: the one the readouts, the
+  // recording's checks and state() describe. s.base is a cloth that follows the scene's
+  // settings without the panels' own (never stepped): what the settings panel shows.
   const s = {
-    cloth: null, m: null, sceneText: '', sceneObj: null, view: null,
-    preset: 'curtain', params: null,
+    panels: [], cloth: null, base: null, sceneText: '', sceneObj: null, view: null,
+    preset: 'curtain', params: null, compare: [],
     mode: 'strain', scaleMode: 'auto', fullScale: 0.05,
-    paused: false, acc: 0, last: -1, frames: 0, nextAction: 0, renders: 0, dirty: true, needMeasure: true,
-    simMs: NaN, renderMs: NaN, fps: NaN, lastReadout: 0, scale: 0,
+    paused: false, acc: 0, last: -1, frames: 0, renders: 0, dirty: true, needMeasure: true,
+    renderMs: NaN, fps: NaN, lastReadout: 0, scale: 0,
     wanted: 0, played: 0, speed: 1,   // seconds of wall clock and of simulation since the last readout
     replayEnd: -1,      // the frame a replay stops at, or -1 when none is playing
     replayEnded: false, // a replay stopped at its end and nothing has happened since
     pinEdits: {},       // vertex -> pinned: the pins a person set (true) or removed (false)
+    rects: [],          // the panels' rectangles in the canvas, CSS px
   };
   const recorder = window.clothRecorder.create();
   const share = window.clothShare;
+  const blade = window.clothBlade.create(document.getElementById('blade'));
+  let bladeOn = false;      // the Cut tool (touch and pen cut with it; a mouse with Alt too)
 
   const ui = window.clothUI.create({
     pause: function () { setPaused(!s.paused); },
@@ -62,14 +74,22 @@
     exportFile: function () { exportRecording(); },
     copyLink: function () { copyLink(); },
     openFile: function (file) { openFile(file); },
+    charts: function (on) { setCharts(on); },
+    cutTool: function (on) { setCutTool(on === undefined ? !bladeOn : on); },
   });
+
+  const compareUI = window.clothCompare.create({
+    change: function (list, note) { setCompare(list, note); },
+    note: function (text) { ui.note(text); },
+  });
+  const charts = window.clothCharts.create(document.getElementById('charts'));
 
   const renderer = window.clothRenderer.create(canvas, {
     webgl: options.webgl,
     onLost: function () { ui.error('The WebGL context was lost; waiting for the browser to restore it.'); },
     onRestored: function () {
       if (ui.errorText().indexOf('WebGL context was lost') >= 0) ui.clearError();
-      if (s.cloth) renderer.setScene(s.cloth);
+      s.panels.forEach(function (p) { p.draw.setScene(p.cloth); });
       s.dirty = true;
     },
     onError: function (msg) { ui.fatal(msg); },
@@ -78,15 +98,31 @@
 
   // ---- scenes -------------------------------------------------------------
 
-  // The core's operations on one cloth, made once per scene (see core.js: no
-  // allocation per call in the hot loop).
-  function bind(cloth) { return core.ops(cloth); }
-
-  // The settings the panel shows, as the cloth has them now.
+  // The settings the panel shows, as a cloth has them now.
   function paramsOf(cloth) {
     return { cols: cloth.cols, rows: cloth.rows, iterations: cloth.iterations,
              substeps: cloth.substeps, gravity: cloth.scene.gravity_y,
-             damping: cloth.scene.damping, solver: cloth.scene.solver };
+             damping: cloth.scene.damping, solver: cloth.scene.solver, tear: cloth.tear };
+  }
+
+  // The page's limits for a scene and each of its panels (a panel costs what its scene
+  // does, and N panels N times one); '' when it can run.
+  function limitOf(obj) {
+    const list = Array.isArray(obj.compare) ? obj.compare : [];
+    if (list.length === 0) return scenes.pageLimit(obj);
+    let work = 0;
+    for (let i = 0; i < list.length; i++) {
+      const one = Object.assign({}, obj, list[i]);
+      delete one.compare;
+      const limit = scenes.pageLimit(one);
+      if (limit) return 'panel ' + (i + 1) + ': ' + limit;
+      work += scenes.workOf(one);
+    }
+    if (work > scenes.PAGE_LIMITS.work) {
+      return 'its ' + list.length + ' panels need about ' + work.toExponential(1) + ' edge updates a frame, ' +
+        'and the page takes at most ' + scenes.PAGE_LIMITS.work.toExponential(0) + ' (fewer panels, substeps or iterations)';
+    }
+    return '';
   }
 
   // Load scene JSON text. On a bad scene: show the message, keep the old scene
@@ -94,15 +130,22 @@
   // holds: [{id, k}] pointers that go on holding vertex k of the new cloth (a grid change);
   // any other pointer lets go.
   function load(text, preset, view, holds) {
-    let cloth, obj;
+    let obj, cloths = [], base;
     try {
       // The core checks the scene (its messages, as in the CLI); then the page's limits,
       // before anything is built: a scene beyond them would take seconds a frame.
       const scene = core.parseScene(text);
       obj = JSON.parse(text);
-      const limit = scenes.pageLimit(obj);
+      const limit = limitOf(obj);
       if (limit) throw new Error(limit);
-      cloth = core.build(scene);
+      const list = Array.isArray(obj.compare) ? obj.compare : [];
+      if (list.length === 0) {
+        cloths.push(core.build(scene));
+        base = cloths[0];
+      } else {
+        for (let i = 0; i < list.length; i++) cloths.push(core.build(core.parseScene(text, i)));
+        base = core.build(scene);
+      }
     } catch (e) {
       const msg = e && e.message ? e.message : String(e);
       ui.error('Scene not loaded: ' + msg + (s.cloth ? ' (the previous scene keeps running)' : ''));
@@ -110,64 +153,71 @@
     }
     ui.clearError();
     input.releaseAll(holds || []);
-    s.cloth = cloth;
+    s.compare = Array.isArray(obj.compare) ? obj.compare.map(function (o) { return Object.assign({}, o); }) : [];
+    s.panels = cloths.map(function (cloth, i) {
+      return { cloth: cloth, run: null, draw: renderer.ok ? renderer.panel(i) : null,
+               simMs: NaN, clamped: 0 };
+    });
+    s.cloth = cloths[0];
+    s.base = base;
+    s.baseNext = 0;
     s.pinEdits = {};
-    s.m = bind(cloth);
-    s.clamped = 0;
     s.sceneText = text;
     s.sceneObj = obj;
     s.preset = preset;
     s.view = view || scenes.viewFor(obj);
     s.frames = 0;
     s.acc = 0;
-    recorder.start(obj, window.clothRecorder.scriptOf(cloth), cloth.n_verts);
+    recorder.start(obj, window.clothRecorder.scriptOf(s.cloth), s.cloth.n_verts);
     s.replayEnd = typeof obj.frames === 'number' ? obj.frames : -1;
     s.replayEnded = false;
-    s.nextAction = 0;
-    script(0);              // the scene's own actions of frame 0 come before any frame
-    s.params = paramsOf(cloth);
-    s.simMs = NaN;            // timings and speed are the new scene's own
+    // The scene's own actions of frame 0 come before any frame (measure.run applies them).
+    s.panels.forEach(function (p) { p.run = measure.run(p.cloth); });
+    scripted(0, s.panels[0].run.next);
     s.wanted = 0; s.played = 0; s.speed = 1;
+    charts.reset(s.panels.length);
+    compareUI.render(s.compare);
     if (renderer.ok) {
-      renderer.setScene(cloth);
-      renderer.setView(s.view);
+      s.panels.forEach(function (p) { p.draw.setScene(p.cloth); p.draw.setView(s.view); });
+      layout();
     }
     // The pointers that kept a vertex hold it again, where it now is, keeping on with their
     // pointer from here (recorded as grabs, at frame 0 of the new recording).
     input.regrab();
-    s.m.measure();
+    s.panels.forEach(function (p) { p.cloth.measure(); });
     s.needMeasure = false;
     s.dirty = true;
     ui.setPreset(preset);
     ui.setSolver(s.params.solver);
     ui.setParams(s.params);
     if (renderer.ok && !renderer.lost) render();
-    const work = scenes.workOf(obj);
+    const work = scenes.workOf(obj) * Math.max(1, s.compare.length);
     if (work > scenes.REAL_TIME_WORK) {
       ui.note('This scene needs about ' + work.toExponential(1) + ' edge updates a frame: ' +
               'expect slow motion on an ordinary machine');
     }
     if (s.replayEnd === 0) endReplay();
     else if (s.replayEnd > 0) setPaused(false);
-    return cloth;
+    return s.cloth;
   }
 
-  // The scene's own actions due at frame f (cloth/api.py apply_due, the CLI's loop). A
-  // scripted grab takes its vertex from a pointer that held it (the script moves it now,
-  // and the pointer's release must not let go of the script's hold).
-  function script(f) {
+  // After the scene's own actions [from, to) of the first panel were applied (every panel has
+  // the same script): a scripted grab takes its vertex from a pointer that held it (the
+  // script moves it now, and the pointer's release must not let go of the script's hold); a
+  // scripted set changes what the settings panel shows; the base cloth follows the script.
+  function scripted(from, to) {
     const actions = s.cloth.scene.actions;
-    if (s.nextAction >= actions.length || actions[s.nextAction].frame > f) return;
-    const from = s.nextAction;
-    s.nextAction = core.applyDue(s.cloth, s.nextAction, f);
-    let settings = false;
-    for (let i = from; i < s.nextAction; i++) {
+    if (s.base !== s.cloth) s.baseNext = core.applyDue(s.base, s.baseNext, s.frames);
+    for (let i = from; i < to; i++) {
       if (actions[i].op === 'grab') input.forget(actions[i].vertex);
-      else if (actions[i].op === 'set') settings = true;
     }
-    if (settings) { s.params = paramsOf(s.cloth); ui.setParams(s.params); ui.setSolver(s.params.solver); }
-    s.needMeasure = true;
-    s.dirty = true;
+    s.params = paramsOf(s.base);
+    if (to > from) {
+      ui.setParams(s.params);
+      ui.setSolver(s.params.solver);
+      s.needMeasure = true;
+      s.dirty = true;
+    }
   }
 
   // ---- replay, recording, sharing ---------------------------------------------
@@ -184,11 +234,15 @@
   function takeOver() {
     if (s.replayEnd >= 0) {
       s.replayEnd = -1;
-      core.dropActionsAfter(s.cloth, s.frames);
-      recorder.cut(s.frames);
+      s.panels.forEach(function (p) { core.dropActionsAfter(p.cloth, s.frames); });
+      if (s.base !== s.cloth) core.dropActionsAfter(s.base, s.frames);
+      recorder.truncate(s.frames);
       const c = s.cloth;
       for (let k = 0; k < c.n_verts; k++) {
-        if (c.held[k] !== 0 && !input.holds(k)) { s.m.release(k); recorder.release(s.frames, k); }
+        if (c.held[k] !== 0 && !input.holds(k)) {
+          s.panels.forEach(function (p) { p.run.ops.release(k); });
+          recorder.release(s.frames, k);
+        }
       }
       s.dirty = true;
     }
@@ -200,7 +254,8 @@
   }
 
   function recordingName() {
-    return 'cloth-' + (s.preset || 'scene') + '-' + recorder.complete(s.frames) + 'f.json';
+    return 'cloth-' + (s.preset || 'scene') + (s.compare.length ? '-compare' : '') + '-' +
+      recorder.complete(s.frames) + 'f.json';
   }
 
   // Restart the recording from frame 0 at real speed.
@@ -225,18 +280,29 @@
     return share.linkFor(recordingText());
   }
 
+  // From the key or click handler itself (share.copyLater: WebKit's clipboard needs the
+  // person's task). A link longer than share.MAX_LINK is not copied: the note offers Export.
   function copyLink() {
-    return link().then(function (url) {
-      if (url.length > share.MAX_LINK) {
-        ui.note('This recording makes a link of ' + url.length + ' characters, longer than the ' +
-                share.MAX_LINK + ' a link may have: use Export to save it as a file');
-        return url;
-      }
-      return share.copy(url).then(function () {
+    const made = link();
+    const fits = made.then(function (url) {
+      if (url.length > share.MAX_LINK) throw new Error('too long');
+      return url;
+    });
+    return share.copyLater(fits).then(function () {
+      return made.then(function (url) {
         ui.note('Link copied (' + url.length + ' characters): it replays this recording');
-      }, function () {
-        window.prompt('Copy this link (the browser kept the clipboard closed):', url);
-      }).then(function () { return url; });
+        return url;
+      });
+    }, function () {
+      return made.then(function (url) {
+        if (url.length > share.MAX_LINK) {
+          ui.note('This recording makes a link of ' + url.length + ' characters, longer than the ' +
+                  share.MAX_LINK + ' a link may have: use Export to save it as a file');
+        } else {
+          window.prompt('Copy this link (the browser kept the clipboard closed):', url);
+        }
+        return url;
+      });
     });
   }
 
@@ -249,8 +315,10 @@
     });
   }
 
+  // A preset keeps compare mode: the same panels run the new scene.
   function usePreset(name, params) {
     const made = scenes.make(name, params || scenes.defaults(name));
+    if (s.compare.length) made.scene.compare = s.compare;
     ui.note('');
     return load(JSON.stringify(made.scene), name, made.view);
   }
@@ -265,7 +333,35 @@
     return true;
   }
 
-  // Keys that leave the grid as it is apply to the running cloth (core.setScene): its
+  // Compare mode: the current scene (its grid, pins, script and settings) with a new compare
+  // list, from frame 0 and a new recording; [] leaves compare mode.
+  function setCompare(list, note) {
+    if (!Array.isArray(list)) throw new Error('compare needs an array of objects of scene keys');
+    const obj = Object.assign({}, s.sceneObj);
+    delete obj.frames;
+    if (list.length) obj.compare = list; else delete obj.compare;
+    try {
+      load(JSON.stringify(obj), s.preset, s.view);
+    } catch (e) {
+      compareUI.render(s.compare);   // the banner says why; the old panels run on
+      return false;
+    }
+    ui.note(note || (list.length ? 'Comparing ' + list.length + ' panels under the same hands, from frame 0' : ''));
+    return true;
+  }
+
+  function setCutTool(on) {
+    bladeOn = !!on;
+    ui.setCutTool(bladeOn);
+    canvas.classList.toggle('cutting', bladeOn);
+  }
+
+  function setCharts(on) {
+    document.getElementById('charts').hidden = !on;
+    if (on) charts.draw();
+  }
+
+  // Keys that leave the grid as it is apply to the running cloth (core.setSettings): its
   // positions, speeds, pins and held vertices stay. Columns and rows make a new grid.
   const GRID_KEYS = { cols: 1, rows: 1 };
 
@@ -293,25 +389,30 @@
     out.solver = p.solver;
     out.damping = p.damping;
     out.gravity = [Array.isArray(obj.gravity) ? obj.gravity[0] : 0, p.gravity];
+    if (p.tear > 0) out.tear = p.tear; else delete out.tear;
     return out;
   }
 
   // New settings for the running cloth (the core's set: cloth/api.py set_settings, what a
-  // recorded `set` action replays); a rejected one leaves everything as it was.
+  // recorded `set` action replays), in every panel: keys a panel has of its own are set too,
+  // as the recording's `set` sets them; a rejected one leaves everything as it was.
   function retune(p, note) {
     const keys = {};
     if (p.iterations !== s.params.iterations) keys.iterations = p.iterations;
     if (p.substeps !== s.params.substeps) keys.substeps = p.substeps;
     if (p.solver !== s.params.solver) keys.solver = p.solver;
     if (p.damping !== s.params.damping) keys.damping = p.damping;
-    if (p.gravity !== s.params.gravity) keys.gravity = [s.cloth.scene.gravity_x, p.gravity];
+    if (p.gravity !== s.params.gravity) keys.gravity = [s.base.scene.gravity_x, p.gravity];
+    if (p.tear !== s.params.tear) keys.tear = p.tear > 0 ? p.tear : null;
     const obj = withSettings(s.sceneObj, p);
     try {
-      const limit = scenes.pageLimit(obj);
+      const limit = limitOf(obj);
       if (limit) throw new Error(limit);
       if (Object.keys(keys).length) {
         takeOver();
-        core.setSettings(s.cloth, JSON.stringify(keys));
+        const text = JSON.stringify(keys);
+        if (s.base !== s.cloth) core.setSettings(s.base, text);
+        s.panels.forEach(function (panel) { core.setSettings(panel.cloth, text); });
         recorder.set(s.frames, keys);
       }
     } catch (e) {
@@ -322,7 +423,7 @@
     }
     s.sceneObj = obj;
     s.sceneText = JSON.stringify(obj);   // Reset restarts with the new settings
-    s.params = paramsOf(s.cloth);
+    s.params = paramsOf(s.base);
     ui.setParams(s.params);
     ui.setSolver(s.params.solver);
     ui.note(note);
@@ -346,6 +447,7 @@
     if (preset !== 'custom') {
       const made = scenes.make(preset, p);
       obj = made.scene; view = made.view;
+      if (s.compare.length) obj.compare = s.compare;
     } else {
       obj = withSettings(s.sceneObj, p);
       obj.cols = p.cols; obj.rows = p.rows;
@@ -359,7 +461,8 @@
         let lost = 0;
         obj.actions = [];
         s.sceneObj.actions.forEach(function (a) {
-          if (a.op === 'set') { obj.actions.push(a); return; }
+          // a set has no vertex, and a cut is a blade in the world: both stay as they are
+          if (a.op === 'set' || a.op === 'cut') { obj.actions.push(a); return; }
           const m = moved(a.vertex);
           if (m >= 0) obj.actions.push(Object.assign({}, a, { vertex: m })); else lost++;
         });
@@ -423,9 +526,18 @@
 
   // Auto is the seed's normalisation by the frame's maximum, above a floor: a cloth at rest
   // has solver noise of up to about 1e-3, which must stay dark, not be painted as strain.
+  // One scale for every panel: the largest of them, so a colour means one strain everywhere.
   const AUTO_FLOOR = 0.01;
 
-  function frameMax() { return s.mode === 'stress' ? s.cloth.max_stress : s.cloth.max_diff; }
+  function frameMax() {
+    let top = 0;
+    for (let i = 0; i < s.panels.length; i++) {
+      const c = s.panels[i].cloth;
+      const v = s.mode === 'stress' ? c.max_stress : c.max_diff;
+      if (v > top) top = v;
+    }
+    return top;
+  }
 
   function currentScale() {
     if (s.scaleMode === 'fixed') return s.fullScale;
@@ -434,44 +546,52 @@
 
   // ---- stepping and drawing -------------------------------------------------
 
-  // Runs up to n frames; with a budget (ms), stops once it is spent (at least one frame
-  // runs); a replay stops at its last frame. Returns the frames run.
+  function allAsleep() {
+    for (let i = 0; i < s.panels.length; i++) {
+      const p = s.panels[i];
+      if (!p.cloth.asleep || p.run.next < p.cloth.scene.actions.length) return false;
+    }
+    return true;
+  }
+
+  // Runs up to n frames in every panel; with a budget (ms), stops once it is spent (at least
+  // one frame runs; the first panel decides how many, and the others run as many); a replay
+  // stops at its last frame. Returns the frames run.
   function simulate(n, budgetMs) {
     if (s.replayEnd >= 0) n = Math.min(n, s.replayEnd - s.frames);
     if (n <= 0) { atReplayEnd(); return 0; }
-    const m = s.m;
-    const scripted = s.cloth.scene.actions.length;
-    if (s.cloth.asleep && s.nextAction >= scripted) {
-      // At rest (the core stopped stepping it): nothing to step, measure or draw until an
-      // operation wakes it.
+    if (allAsleep()) {
+      // At rest (the core stopped stepping them): nothing to step, measure or draw until an
+      // operation wakes them.
       s.frames += n;
-      s.simMs = NaN;   // nothing to time: the readout says "at rest"
+      s.panels.forEach(function (p) { p.run.frame += n; p.simMs = NaN; });
       atReplayEnd();
       return n;
     }
-    const t0 = performance.now();
-    let done = 0;
-    while (done < n) {
-      m.frame();
-      done++;
-      s.frames++;
-      if (s.nextAction < scripted) script(s.frames);
-      if (budgetMs > 0 && performance.now() - t0 > budgetMs) break;
+    const first = s.panels[0].run, from = first.next;
+    const share_ = s.panels.length > 1 ? budgetMs / s.panels.length : budgetMs;
+    const done = measure.step(first, n, budgetMs > 0 ? share_ : 0);
+    for (let i = 1; i < s.panels.length; i++) measure.step(s.panels[i].run, done, 0);
+    s.frames += done;
+    scripted(from, first.next);
+    for (let i = 0; i < s.panels.length; i++) {
+      const p = s.panels[i];
+      p.cloth.measure();
+      const ms = p.cloth.asleep ? NaN : p.run.ms / done;
+      p.simMs = Number.isFinite(p.simMs) && Number.isFinite(ms) ? p.simMs + EMA * (ms - p.simMs) : ms;
+      // The core's max_speed safety net engaged: the settings are unstable (one sweep per
+      // step on an undamped grid). Say so rather than let it pass silently.
+      if (p.cloth.clamped > p.clamped) {
+        p.clamped = p.cloth.clamped;
+        const speed = p.cloth.scene.max_speed;
+        const which = s.panels.length > 1 ? 'Panel ' + (i + 1) + ': ' : '';
+        // (Damping does not cure it: measured, 1.8 million capped vertex-steps with damping 1.)
+        ui.note(which + (speed < 1000
+          ? 'Speeds were capped at the scene\'s max_speed of ' + speed + ' m/s'
+          : 'Unstable settings: speeds were capped at max_speed; use more iterations or ' +
+            'substeps, or the default solver'));
+      }
     }
-    m.measure();
-    // The core's max_speed safety net engaged: the settings are unstable (one sweep per
-    // step on an undamped grid). Say so rather than let it pass silently.
-    if (s.cloth.clamped > s.clamped) {
-      s.clamped = s.cloth.clamped;
-      // (Damping does not cure it: measured, 1.8 million capped vertex-steps with damping 1.)
-      const speed = s.cloth.scene.max_speed;
-      ui.note(speed < 1000
-        ? 'Speeds were capped at the scene\'s max_speed of ' + speed + ' m/s'
-        : 'Unstable settings: speeds were capped at max_speed; use more iterations or ' +
-          'substeps, or the default solver');
-    }
-    const ms = (performance.now() - t0) / done;
-    s.simMs = Number.isFinite(s.simMs) ? s.simMs + EMA * (ms - s.simMs) : ms;
     s.needMeasure = false;
     s.dirty = true;
     atReplayEnd();
@@ -484,9 +604,10 @@
 
   // The overlays' boxes in client pixels (left, top, right, bottom each), measured on a
   // resize and with each readout, not per frame; an overlay over a held vertex fades.
-  const overlayEls = [document.getElementById('legend'), document.getElementById('hud')];
+  const overlayEls = [document.getElementById('legend'), document.getElementById('hud'),
+                      document.getElementById('charts')];
   const overlayBox = new Float64Array(4 * overlayEls.length);
-  const overlayUnder = [false, false];
+  const overlayUnder = [false, false, false];
 
   function measureOverlays() {
     for (let i = 0; i < overlayEls.length; i++) {
@@ -497,18 +618,20 @@
   }
 
   function fadeOverlays() {
-    const c = s.cloth, dragging = input.dragging() > 0 && renderer.ok;
-    const cr = dragging ? canvasBox : null;
+    const dragging = input.dragging() > 0 && renderer.ok;
     for (let i = 0; i < overlayEls.length; i++) {
       let under = false;
       if (dragging) {
         const pad = 24;   // a finger's width around the vertex
-        for (let k = 0; k < c.n_verts && !under; k++) {
-          if (c.held[k] === 0) continue;
-          const p = renderer.toCanvas(c.pos[2 * k], c.pos[2 * k + 1]);
-          const x = cr[0] + p[0], y = cr[1] + p[1];
-          under = x > overlayBox[4 * i] - pad && x < overlayBox[4 * i + 2] + pad &&
-                  y > overlayBox[4 * i + 1] - pad && y < overlayBox[4 * i + 3] + pad;
+        for (let j = 0; j < s.panels.length && !under; j++) {
+          const c = s.panels[j].cloth, d = s.panels[j].draw;
+          for (let k = 0; k < c.n_verts && !under; k++) {
+            if (c.held[k] === 0) continue;
+            const p = d.toCanvas(c.pos[2 * k], c.pos[2 * k + 1]);
+            const x = canvasBox[0] + p[0], y = canvasBox[1] + p[1];
+            under = x > overlayBox[4 * i] - pad && x < overlayBox[4 * i + 2] + pad &&
+                    y > overlayBox[4 * i + 1] - pad && y < overlayBox[4 * i + 3] + pad;
+          }
         }
       }
       if (under !== overlayUnder[i]) { overlayUnder[i] = under; overlayEls[i].classList.toggle('under', under); }
@@ -523,10 +646,11 @@
   function render() {
     if (!s.cloth || !renderer.ok || renderer.lost) return;
     fadeOverlays();
-    if (s.needMeasure) { s.m.measure(); s.needMeasure = false; }
+    if (s.needMeasure) { s.panels.forEach(function (p) { p.cloth.measure(); }); s.needMeasure = false; }
     const t0 = performance.now();
     s.scale = currentScale();
-    renderer.draw(s.cloth, s.mode, s.scale);
+    renderer.begin();
+    for (let i = 0; i < s.panels.length; i++) s.panels[i].draw.draw(s.panels[i].cloth, s.mode, s.scale);
     const ms = performance.now() - t0;
     s.renderMs = Number.isFinite(s.renderMs) ? s.renderMs + EMA * (ms - s.renderMs) : ms;
     s.dirty = false;
@@ -549,6 +673,8 @@
     ui.setPaused(s.paused);
   }
 
+  function fmt(v) { return window.clothUI.fmt(v, 4); }
+
   function readouts(now) {
     if (now - s.lastReadout < READOUT_MS || !s.cloth) return;
     s.lastReadout = now;
@@ -558,15 +684,30 @@
     if (s.wanted > 0) s.speed = s.played / s.wanted;
     s.wanted = 0; s.played = 0;
     const slow = !s.paused && s.speed < SLOW_MOTION;
+    let simMs = 0;
+    s.panels.forEach(function (p) { if (Number.isFinite(p.simMs)) simMs += p.simMs; });
     ui.setReadouts({
-      simMs: s.simMs, renderMs: s.renderMs, fps: s.fps, rms: c.rms_strain, max: c.max_strain,
-      size: c.cols + '×' + c.rows + ' · ' + c.n_edges + (c.n_edges === 1 ? ' edge' : ' edges') + (c.asleep ? ' · at rest' : '') +
+      simMs: allAsleep() ? NaN : simMs, renderMs: s.renderMs, fps: s.fps, rms: c.rms_strain, max: c.max_strain,
+      size: c.cols + '×' + c.rows + ' · ' + c.n_edges + (c.n_edges === 1 ? ' edge' : ' edges') +
+        (c.broken > 0 ? ' left of ' + (c.n_edges + c.broken) : '') +
+        (s.panels.length > 1 ? ' · ' + s.panels.length + ' panels' : '') + (allAsleep() ? ' · at rest' : '') +
         (slow ? ' · slow motion ×' + s.speed.toFixed(2) : ''),
     });
     ui.setLegend(s.scale, s.scaleMode === 'fixed' ? 'fixed' : (frameMax() > AUTO_FLOOR ? 'max' : 'floor'));
     ui.setRecording({ frames: s.frames, actions: recorder.count(), full: recorder.full(),
                       complete: recorder.complete(s.frames), replayEnd: s.replayEnd });
+    if (s.panels.length > 1) {
+      s.panels.forEach(function (p, i) {
+        compareUI.setLabel(i, (i + 1) + ' · ' + measure.label(p.cloth) + '\n' +
+          (Number.isFinite(p.simMs) ? p.simMs.toFixed(2) + ' ms/frame' : 'at rest') +
+          ' · strain rms ' + fmt(p.cloth.rms_strain) + ' · max ' + fmt(p.cloth.max_strain));
+      });
+    }
   }
+
+  // Charts: a sample of each panel every clothCharts.SAMPLE_MS while the simulation runs.
+  function panelRms(i) { return s.panels[i].cloth.rms_strain; }
+  function panelMs(i) { return s.panels[i].simMs; }
 
   function tick(nowMs) {
     window.requestAnimationFrame(tick);
@@ -585,9 +726,11 @@
         // runs in slow motion (the readout says so) and input is handled every frame.
         s.acc = done < due || Math.floor(s.acc / dt) > MAX_CATCHUP ? 0 : s.acc - done * dt;
         s.wanted += gap;
-        s.played += s.cloth.asleep ? gap : done * dt;
+        s.played += allAsleep() ? gap : done * dt;
+        if (charts.sample(nowMs, panelRms, panelMs) && !document.getElementById('charts').hidden) charts.draw();
       }
       if (s.dirty) render();
+      if (s.trail) s.trail = blade.draw(performance.now());
     } catch (e) {
       setPaused(true);
       ui.error('Simulation stopped: ' + core.message(e));
@@ -597,23 +740,52 @@
 
   // ---- geometry and input ---------------------------------------------------
 
-  function toWorld(clientX, clientY) {
-    const r = canvas.getBoundingClientRect();
-    return renderer.toWorld(clientX - r.left, clientY - r.top);
+  // The panels' rectangles for the canvas's size (one panel: all of it).
+  function layout() {
+    if (!renderer.ok) return;
+    const n = s.panels.length, v = s.view;
+    s.rects = n > 1
+      ? window.clothCompare.layout(n, renderer.cssWidth, renderer.cssHeight, v.x1 - v.x0, v.y1 - v.y0)
+      : [{ x: 0, y: 0, w: renderer.cssWidth, h: renderer.cssHeight }];
+    s.panels.forEach(function (p, i) {
+      if (n > 1) p.draw.setRect(s.rects[i].x, s.rects[i].y, s.rects[i].w, s.rects[i].h);
+      else p.draw.setRect();
+    });
+    compareUI.placeLabels(n > 1 ? s.rects : []);
   }
 
-  // What a person does to the cloth: applied at once through the core, then recorded at the
-  // current frame (recorder.js). A person acting during a replay takes over (takeOver).
+  // The panel under a point of the canvas (CSS px), or -1.
+  function panelAt(cx, cy) {
+    for (let i = 0; i < s.panels.length; i++) if (s.panels[i].draw.contains(cx, cy)) return i;
+    return -1;
+  }
+
+  // What a person does to the cloth: applied at once through the core, in every panel, then
+  // recorded at the current frame (recorder.js). A person acting during a replay takes over.
   const input = window.clothInput.attach(canvas, {
-    toWorld: toWorld,
-    pick: function (x, y, radiusCss) {
-      if (!s.cloth || !renderer.ok) return -1;
-      return s.m.nearest(x, y, radiusCss / renderer.pixelsPerMetre());
+    // client px -> {panel, x, y} world metres in the panel under the point (panel -1: none)
+    locate: function (clientX, clientY) {
+      const r = canvas.getBoundingClientRect(), cx = clientX - r.left, cy = clientY - r.top;
+      const i = renderer.ok ? panelAt(cx, cy) : -1;
+      const w = i >= 0 ? s.panels[i].draw.toWorld(cx, cy) : [NaN, NaN];
+      return { panel: i, x: w[0], y: w[1] };
     },
-    positionOf: function (k) { return [s.cloth.pos[2 * k], s.cloth.pos[2 * k + 1]]; },
+    toWorld: function (panel, clientX, clientY) {
+      const r = canvas.getBoundingClientRect();
+      return s.panels[Math.min(panel, s.panels.length - 1)].draw.toWorld(clientX - r.left, clientY - r.top);
+    },
+    pick: function (panel, x, y, radiusCss) {
+      if (!s.cloth || !renderer.ok || panel < 0) return -1;
+      const p = s.panels[panel];
+      return p.run.ops.nearest(x, y, radiusCss / p.draw.pixelsPerMetre());
+    },
+    positionOf: function (panel, k) {
+      const pos = s.panels[Math.min(panel, s.panels.length - 1)].cloth.pos;
+      return [pos[2 * k], pos[2 * k + 1]];
+    },
     grab: function (k, x, y) {
       takeOver();
-      s.m.grab(k, x, y);
+      for (let i = 0; i < s.panels.length; i++) s.panels[i].run.ops.grab(k, x, y);
       recorder.grab(s.frames, k, x, y);
       touched();
     },
@@ -621,21 +793,23 @@
       const pos = s.cloth.pos, x0 = pos[2 * k], y0 = pos[2 * k + 1];
       if (x === x0 && y === y0) return;       // a hand held still changes nothing
       takeOver();
-      s.m.move(k, x, y);
+      for (let i = 0; i < s.panels.length; i++) s.panels[i].run.ops.move(k, x, y);
       recorder.move(s.frames, k, x, y, x0, y0);
       touched();
     },
     release: function (k) {
       if (k >= s.cloth.n_verts || s.cloth.held[k] === 0) return;
       takeOver();
-      s.m.release(k);
+      for (let i = 0; i < s.panels.length; i++) s.panels[i].run.ops.release(k);
       recorder.release(s.frames, k);
       touched();
     },
     togglePin: function (k) {
       takeOver();
       const pinned = s.cloth.pinned[k] !== 0;
-      s.m.toggle_pin(k);
+      for (let i = 0; i < s.panels.length; i++) {
+        if (pinned) s.panels[i].run.ops.unpin(k); else s.panels[i].run.ops.pin(k);
+      }
       if (pinned) recorder.unpin(s.frames, k); else recorder.pin(s.frames, k);
       s.pinEdits[k] = !pinned;
       touched();
@@ -643,6 +817,19 @@
     // Held by someone else: another pointer, or the scene's script (a replay's script lets go
     // when a person takes over, so its vertices can be grabbed then).
     isHeld: function (k) { return s.cloth.held[k] !== 0 && (s.replayEnd < 0 || input.holds(k)); },
+    bladeMode: function () { return bladeOn; },
+    cut: function (x0, y0, x1, y1) {
+      if (x0 === x1 && y0 === y1) return;
+      takeOver();
+      for (let i = 0; i < s.panels.length; i++) s.panels[i].run.ops.cut(x0, y0, x1, y1);
+      recorder.cut(s.frames, x0, y0, x1, y1);
+      touched();
+    },
+    trail: function (clientX, clientY, start) {
+      const r = canvas.getBoundingClientRect();
+      blade.add(clientX - r.left, clientY - r.top, performance.now(), start);
+      s.trail = true;
+    },
   });
 
   function touched() {
@@ -650,19 +837,22 @@
     s.dirty = true;
   }
 
-  function resizeFromRect() {
-    if (!renderer.ok) return;
-    const r = canvas.getBoundingClientRect();
-    renderer.resize(r.width, r.height);
-    input.reproject();
+  function resized(w, h, devW, devH) {
+    renderer.resize(w, h, devW, devH);
+    layout();
+    input.reproject();   // a held vertex stays under its pointer through the resize
     measureOverlays();
     measureCanvas();
     s.dirty = true;
   }
 
   if (renderer.ok) {
-    resizeFromRect();
-    window.addEventListener('resize', resizeFromRect);
+    const r0 = canvas.getBoundingClientRect();
+    resized(r0.width, r0.height);
+    window.addEventListener('resize', function () {
+      const r = canvas.getBoundingClientRect();
+      resized(r.width, r.height);
+    });
     if (window.ResizeObserver) {
       // device-pixel-content-box gives the exact drawing-buffer size (sharp at
       // fractional devicePixelRatio); where unsupported, round CSS size * dpr.
@@ -676,12 +866,9 @@
         // in the device-pixel box: trust it only when it agrees with CSS size * dpr.
         const dpr = window.devicePixelRatio || 1;
         if (dev && (Math.abs(dev.inlineSize - w * dpr) > 1 || Math.abs(dev.blockSize - h * dpr) > 1)) dev = null;
-        renderer.resize(w, h, dev ? dev.inlineSize : 0, dev ? dev.blockSize : 0);
-        input.reproject();   // a held vertex stays under its pointer through the resize
-        measureOverlays();
-        measureCanvas();
-        s.dirty = true;
+        resized(w, h, dev ? dev.inlineSize : 0, dev ? dev.blockSize : 0);
         render();  // same task as the resize: no blank frame
+        if (!document.getElementById('charts').hidden) charts.draw();
       });
       try { ro.observe(canvas, { box: 'device-pixel-content-box' }); } catch (e) { ro.observe(canvas); }
     }
@@ -689,24 +876,27 @@
 
   // ---- test seam ----------------------------------------------------------
 
-  window.clothApp = {
-    // {positions: [[x, y]...] metres, screen: [[clientX, clientY]...], pinned: [bool...], held: [bool...]}
-    state: function () {
-      const c = s.cloth, n = c.n_verts, pos = c.pos;
-      const r = canvas.getBoundingClientRect();
-      const out = { positions: [], screen: [], pinned: [], held: [] };
-      for (let k = 0; k < n; k++) {
-        const x = pos[2 * k], y = pos[2 * k + 1];
-        out.positions.push([x, y]);
-        if (renderer.ok) {
-          const p = renderer.toCanvas(x, y);
-          out.screen.push([r.left + p[0], r.top + p[1]]);
-        }
-        out.pinned.push(c.pinned[k] !== 0);
-        out.held.push(c.held[k] !== 0);
+  // {positions: [[x, y]...] metres, screen: [[clientX, clientY]...], pinned, held} of panel i.
+  function stateOf(i) {
+    const p = s.panels[i], c = p.cloth, n = c.n_verts, pos = c.pos;
+    const r = canvas.getBoundingClientRect();
+    const out = { positions: [], screen: [], pinned: [], held: [] };
+    for (let k = 0; k < n; k++) {
+      const x = pos[2 * k], y = pos[2 * k + 1];
+      out.positions.push([x, y]);
+      if (renderer.ok) {
+        const q = p.draw.toCanvas(x, y);
+        out.screen.push([r.left + q[0], r.top + q[1]]);
       }
-      return out;
-    },
+      out.pinned.push(c.pinned[k] !== 0);
+      out.held.push(c.held[k] !== 0);
+    }
+    return out;
+  }
+
+  window.clothApp = {
+    // The first panel's (the only one outside compare mode).
+    state: function () { return stateOf(0); },
     setPaused: setPaused,
     advance: advance,
     // The recording since the last load or reset, as scene JSON text with `frames`.
@@ -715,6 +905,22 @@
     link: link,
     replay: function () { replay(); return true; },
     exportRecording: exportRecording,
+    // Compare mode: an array of objects of scene keys, one per panel ([] leaves it).
+    compare: function (list) { return setCompare(list); },
+    // Per panel: {label, scene (the panel's full scene JSON text), positions, screen,
+    // rms_strain, max_strain, sim_ms}, and pinned, held, max_diff, max_stress.
+    panels: function () {
+      return s.panels.map(function (p, i) {
+        const st = stateOf(i);
+        const obj = Object.assign({}, s.sceneObj);
+        delete obj.compare;
+        if (s.compare.length) Object.assign(obj, s.compare[i]);
+        return { label: measure.label(p.cloth), scene: JSON.stringify(obj), positions: st.positions,
+                 screen: st.screen, rms_strain: p.cloth.rms_strain, max_strain: p.cloth.max_strain,
+                 sim_ms: p.simMs, pinned: st.pinned, held: st.held, max_diff: p.cloth.max_diff,
+                 max_stress: p.cloth.max_stress };
+      });
+    },
     setColorMode: setColorMode,
     loadScene: loadScene,
     // Extras for tests and the console.
@@ -725,6 +931,7 @@
     usePreset: function (name) { usePreset(name); return true; },
     setParam: setParam,
     setSolver: setSolver,
+    setCutTool: setCutTool,
     reset: reset,
     cloth: function () { return s.cloth; },
     // RGBA at client coordinates, read right after a fresh draw.
@@ -734,13 +941,16 @@
       return points.map(function (p) { return renderer.readPixel(p[0] - r.left, p[1] - r.top); });
     },
     info: function () {
+      let simMs = NaN;
+      if (s.panels.length) simMs = s.panels[0].simMs;
       return {
         webgl: renderer.ok ? renderer.version : 0, lost: !!renderer.lost, restores: renderer.restores || 0,
         drawCalls: renderer.drawCalls || 0, paused: s.paused, mode: s.mode, scaleMode: s.scaleMode,
         scale: s.scale, fullScale: s.fullScale, frames: s.frames, preset: s.preset, params: s.params,
-        asleep: !!(s.cloth && s.cloth.asleep), renders: s.renders,
+        asleep: !!(s.cloth && allAsleep()), renders: s.renders,
         replay: { playing: s.replayEnd >= 0, end: s.replayEnd, ended: s.replayEnded },
-        linkPending: !!s.linkPending,
+        linkPending: !!s.linkPending, panels: s.panels.length, simMs: simMs,
+        edges: s.cloth ? s.cloth.n_edges : 0, broken: s.cloth ? s.cloth.broken : 0, cutTool: bladeOn,
         recorded: recorder.count(), recordingFull: recorder.full(),
         error: ui.errorText(), note: ui.noteText(), scene: s.sceneText,
         canvas: [canvas.width, canvas.height], dpr: window.devicePixelRatio || 1,

@@ -30,9 +30,11 @@ window.clothCore = (function (api, modules) {
     // applyDue(cloth, next, frame) -> next: the scene's actions due at frames up to `frame`
     // (cloth/api.py apply_due, the CLI's own loop).
     applyDue: function (cloth, next, f) { return api.apply_due(cloth, next, f); },
-    // run(sceneJsonText[, frames]) -> JSON text, as the CLI prints it (frames omitted: the
-    // scene's own `frames`).
-    run: wrap(function (text, frames) { return api.run(text, frames === undefined ? null : frames); }),
+    // run(sceneJsonText[, frames[, panel]]) -> JSON text, as the CLI prints it (frames
+    // omitted: the scene's own `frames`; panel, from 0: that panel of its `compare` list).
+    run: wrap(function (text, frames, panel) {
+      return api.run(text, frames === undefined ? null : frames, false, panel === undefined ? -1 : panel);
+    }),
     // load(sceneJsonText) -> a live Cloth (typed arrays, frame(), measure(), grab()...).
     load: wrap(function (text) { return api.load(text); }),
     // build(scene) -> a Cloth from a scene parseScene checked (no second parse).
@@ -46,8 +48,9 @@ window.clothCore = (function (api, modules) {
     message: message,
     api: api,
   };
-  // parseScene(sceneJsonText) -> the checked scene, nothing built (cloth/api.py check).
-  core.parseScene = wrap(function (text) { return api.check(text); });
+  // parseScene(sceneJsonText[, panel]) -> the checked scene, nothing built (cloth/api.py
+  // check); with a panel index (from 0), the scene of that panel of its `compare` list.
+  core.parseScene = wrap(function (text, panel) { return api.check(text, panel === undefined ? -1 : panel); });
 
   // ops(cloth): the per-frame operations as closures over one cloth, made once per
   // scene. They call cloth/sim.py's module functions where it has them: calling a
@@ -55,7 +58,7 @@ window.clothCore = (function (api, modules) {
   // on every call, which the hot loop must not do. Errors stay Transcrypt's here;
   // callers that need messages use core.message(e).
   const sim = modules['cloth.sim'] || {};
-  const OPS = ['frame', 'measure', 'grab', 'move', 'release', 'pin', 'unpin', 'toggle_pin', 'nearest'];
+  const OPS = ['frame', 'measure', 'grab', 'move', 'release', 'pin', 'unpin', 'toggle_pin', 'nearest', 'cut'];
   core.ops = function (cloth) {
     const ops = {};
     OPS.forEach(function (name) {

@@ -1,5 +1,8 @@
 // Pointer input: mouse, touch and pen through Pointer Events.
 //
+// The blade: Alt+drag with a mouse, or any drag while the Cut tool is on (touch, pen),
+// cuts every edge the pointer's path crosses, segment by segment as it moves.
+//
 // Press on or near a vertex: it is grabbed where it is, and from then on keeps
 // its offset from the pointer until release (a press never snaps it to the
 // pointer, so a tap or a pin toggle moves nothing); each pointer holds its own
@@ -17,18 +20,28 @@ window.clothInput = (function () {
   const DOUBLE_TAP_PX = 30;
   const TAP_MOVE_PX = 10;
 
-  // app: {toWorld(clientX, clientY) -> [x, y], pick(x, y, radiusCss) -> k, positionOf(k) -> [x, y],
-  //       grab(k, x, y), move(k, x, y), release(k), togglePin(k), isHeld(k)}
+  // app: {locate(clientX, clientY) -> {panel, x, y} (the panel under the point, -1 for none,
+  //       and world metres there), toWorld(panel, clientX, clientY) -> [x, y],
+  //       pick(panel, x, y, radiusCss) -> k, positionOf(panel, k) -> [x, y],
+  //       grab(k, x, y), move(k, x, y), release(k), togglePin(k), isHeld(k),
+  //       bladeMode() -> whether the Cut tool is on, cut(x0, y0, x1, y1) (world metres),
+  //       trail(clientX, clientY, start) (where the blade went, to draw it)}
+  // A pointer works in the panel it pressed in (compare mode draws several): its vertex stays
+  // under it there, and the app moves the same vertex to the same place in every panel.
   function attach(canvas, app) {
-    // pointerId -> {k, x0, y0 (press, client px), cx, cy (latest), ox, oy (vertex - pointer, m), moved}
+    // pointerId -> {panel, k, x0, y0 (press, client px), cx, cy (latest), ox, oy (vertex -
+    // pointer, m), moved}
     const drags = new Map();
+    // pointerId -> {panel, x, y (the blade's last point, world metres)}
+    const blades = new Map();
     let lastTap = null;         // {t, x, y, k}
 
     function radius(e) { return PICK_RADIUS[e.pointerType] || PICK_RADIUS.mouse; }
 
     function pickAt(e) {
-      const w = app.toWorld(e.clientX, e.clientY);
-      return { k: app.pick(w[0], w[1], radius(e)), w: w };
+      const at = app.locate(e.clientX, e.clientY);
+      return { k: at.panel < 0 ? -1 : app.pick(at.panel, at.x, at.y, radius(e)), panel: at.panel,
+               w: [at.x, at.y] };
     }
 
     canvas.addEventListener('contextmenu', function (e) { e.preventDefault(); });
@@ -51,17 +64,33 @@ window.clothInput = (function () {
         if (hit.k >= 0) app.togglePin(hit.k);
         return;
       }
+      // The blade: Alt+drag (a mouse), or the Cut tool for any pointer.
+      if (e.button === 0 && hit.panel >= 0 && (app.bladeMode() || (e.altKey && e.pointerType === 'mouse'))) {
+        e.preventDefault();
+        try { canvas.setPointerCapture(e.pointerId); } catch (err) { /* untrusted event */ }
+        blades.set(e.pointerId, { panel: hit.panel, x: hit.w[0], y: hit.w[1] });
+        app.trail(e.clientX, e.clientY, true);
+        return;
+      }
       if (e.button !== 0 || hit.k < 0 || app.isHeld(hit.k)) return;
       e.preventDefault();
       try { canvas.setPointerCapture(e.pointerId); } catch (err) { /* untrusted event */ }
-      const v = app.positionOf(hit.k);
-      drags.set(e.pointerId, { k: hit.k, x0: e.clientX, y0: e.clientY, cx: e.clientX, cy: e.clientY,
-                               ox: v[0] - hit.w[0], oy: v[1] - hit.w[1], moved: false });
+      const v = app.positionOf(hit.panel, hit.k);
+      drags.set(e.pointerId, { panel: hit.panel, k: hit.k, x0: e.clientX, y0: e.clientY, cx: e.clientX,
+                               cy: e.clientY, ox: v[0] - hit.w[0], oy: v[1] - hit.w[1], moved: false });
       app.grab(hit.k, v[0], v[1]);
       canvas.classList.add('dragging');
     });
 
     canvas.addEventListener('pointermove', function (e) {
+      const b = blades.get(e.pointerId);
+      if (b) {
+        const w = app.toWorld(b.panel, e.clientX, e.clientY);
+        app.cut(b.x, b.y, w[0], w[1]);
+        b.x = w[0]; b.y = w[1];
+        app.trail(e.clientX, e.clientY, false);
+        return;
+      }
       const d = drags.get(e.pointerId);
       if (!d) {
         if (e.pointerType === 'mouse' && drags.size === 0) {
@@ -75,11 +104,12 @@ window.clothInput = (function () {
 
     function follow(d, clientX, clientY) {
       d.cx = clientX; d.cy = clientY;
-      const w = app.toWorld(clientX, clientY);
+      const w = app.toWorld(d.panel, clientX, clientY);
       app.move(d.k, w[0] + d.ox, w[1] + d.oy);
     }
 
     function end(e) {
+      if (blades.delete(e.pointerId)) return;
       const d = drags.get(e.pointerId);
       if (!d) return;
       drags.delete(e.pointerId);
@@ -121,7 +151,7 @@ window.clothInput = (function () {
         drags.forEach(function (d) {
           if (!d.fresh) return;
           d.fresh = false;
-          const v = app.positionOf(d.k), w = app.toWorld(d.cx, d.cy);
+          const v = app.positionOf(d.panel, d.k), w = app.toWorld(d.panel, d.cx, d.cy);
           d.ox = v[0] - w[0]; d.oy = v[1] - w[1];
           app.grab(d.k, v[0], v[1]);
         });

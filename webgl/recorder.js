@@ -22,8 +22,8 @@
 
 window.clothRecorder = (function () {
   const MAX_ACTIONS = 100000;            // cloth/scene.py MAX_ACTIONS
-  const OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set'];
-  const GRAB = 0, MOVE = 1, RELEASE = 2, PIN = 3, UNPIN = 4, SET = 5;
+  const OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut'];
+  const GRAB = 0, MOVE = 1, RELEASE = 2, PIN = 3, UNPIN = 4, SET = 5, CUT = 6;
   const FIRST_CAPACITY = 1024;
 
   function create() {
@@ -32,6 +32,7 @@ window.clothRecorder = (function () {
     let cap = 0, count = 0;
     let frameOf = new Int32Array(0), opOf = new Uint8Array(0), vertexOf = new Int32Array(0);
     let xOf = new Float64Array(0), yOf = new Float64Array(0);
+    let fromX = new Float64Array(0), fromY = new Float64Array(0);   // a cut's blade start
     const settings = [];     // the keys of each set, indexed by vertexOf[i]
     // Per vertex, for coalescing: the frame of its current run of moves, the index of the
     // run's last move (-1: none) and where that move started from.
@@ -45,6 +46,7 @@ window.clothRecorder = (function () {
       frameOf = more(Int32Array, frameOf); opOf = more(Uint8Array, opOf);
       vertexOf = more(Int32Array, vertexOf);
       xOf = more(Float64Array, xOf); yOf = more(Float64Array, yOf);
+      fromX = more(Float64Array, fromX); fromY = more(Float64Array, fromY);
       cap = next;
     }
 
@@ -70,6 +72,7 @@ window.clothRecorder = (function () {
     function actionAt(i) {
       const op = opOf[i];
       if (op === SET) return { frame: frameOf[i], op: 'set', scene: settings[vertexOf[i]] };
+      if (op === CUT) return { frame: frameOf[i], op: 'cut', from: [fromX[i], fromY[i]], to: [xOf[i], yOf[i]] };
       const a = { frame: frameOf[i], op: OPS[op], vertex: vertexOf[i] };
       if (op === GRAB || op === MOVE) a.to = [xOf[i], yOf[i]];
       return a;
@@ -98,6 +101,13 @@ window.clothRecorder = (function () {
       release: function (f, k) { other(f, RELEASE, k, 0, 0); },
       pin: function (f, k) { other(f, PIN, k, 0, 0); },
       unpin: function (f, k) { other(f, UNPIN, k, 0, 0); },
+      // A blade from (x0, y0) to (x1, y1) at frame f (every cut is kept: each breaks what it
+      // crosses where the cloth is, and several in a frame are their union).
+      cut: function (f, x0, y0, x1, y1) {
+        if (!room(f)) return;
+        const i = push(f, CUT, -1, x1, y1);
+        fromX[i] = x0; fromY[i] = y0;
+      },
       set: function (f, keys) {
         if (!room(f)) return;
         settings.push(keys);
@@ -118,7 +128,7 @@ window.clothRecorder = (function () {
         runLast[k] = push(f, MOVE, k, x, y);
       },
       // A person took over a replay at frame f: the script's later actions are gone.
-      cut: function (f) {
+      truncate: function (f) {
         scripted = scripted.filter(function (a) { return a.frame <= f; });
       },
       count: function () { return scripted.length + count; },
@@ -150,6 +160,7 @@ window.clothRecorder = (function () {
     for (let i = 0; i < list.length; i++) {
       const a = list[i];
       if (a.op === 'set') { out.push({ frame: a.frame, op: 'set', scene: a.keys }); continue; }
+      if (a.op === 'cut') { out.push({ frame: a.frame, op: 'cut', from: [a.from_x, a.from_y], to: [a.to_x, a.to_y] }); continue; }
       const o = { frame: a.frame, op: a.op, vertex: a.vertex };
       if (a.has_to) o.to = [a.to_x, a.to_y];
       out.push(o);

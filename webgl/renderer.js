@@ -8,6 +8,10 @@
 // Per frame the arrays are refilled in place and sent with bufferSubData; they are
 // reallocated only when a scene with more edges or vertices arrives.
 //
+// Panels: one canvas, one or more panels (compare mode runs 2 to 4 cloths side by side),
+// each with its own arrays, its own rectangle of the canvas and its own world -> pixel
+// view. r.begin() clears the canvas; each panel then draws into its rectangle.
+//
 // Colour (fragment shader, t = clamp(value / scale, 0, 1)):
 //   strain: value = |diff| of the edge at both ends, red = base + (1 - base) * t,
 //           so brightness grows linearly with |diff| and an unstrained edge stays visible;
@@ -22,10 +26,6 @@ window.clothRenderer = (function () {
   const DENSE_CELL_CSS = 8;         // below this grid cell size (CSS px) edges thin out
   const PIN_RADIUS_CSS = 4.5;
   const HELD_RADIUS_CSS = 8;
-
-
-
-
 
   // The GLSL lives in webgl/shaders/*.vert|frag; build.py inlines each file as a
   // <script type="x-shader/..." id="shader-NAME"> element, read here by name.
@@ -102,14 +102,8 @@ window.clothRenderer = (function () {
     }
 
     let inst = null, edgeProg = null, markProg = null;
-    let cornerBuf = null, markCornerBuf = null, edgeBuf = null, markBuf = null;
-    let edgeData = new Float32Array(0), markData = new Float32Array(0);
-    let edgeView = edgeData;  // edgeData's first 6 * n_edges floats, made once per scene
-    let edgeCap = 0, markCap = 0, nEdges = 0, nMarks = 0;
-    let view = { x0: 0, x1: 1, y0: -1, y1: 0 };
-    let spacing = 1;  // the grid's rest length, metres: sets the edge width
-    // world -> CSS pixels: cssX = ox + s * x, cssY = oy - s * y
-    let s = 1, ox = 0, oy = 0;
+    let cornerBuf = null, markCornerBuf = null;
+    let gen = 0;          // bumped when the GL objects are made again (a restored context)
 
     function initGL() {
       if (version === 2) {
@@ -133,15 +127,10 @@ window.clothRenderer = (function () {
       markCornerBuf = gl.createBuffer();
       gl.bindBuffer(gl.ARRAY_BUFFER, markCornerBuf);
       gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, -1, 1, 1, -1, 1, 1]), gl.STATIC_DRAW);
-      edgeBuf = gl.createBuffer();
-      gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
-      gl.bufferData(gl.ARRAY_BUFFER, edgeData.byteLength || 4, gl.DYNAMIC_DRAW);
-      markBuf = gl.createBuffer();
-      gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
-      gl.bufferData(gl.ARRAY_BUFFER, markData.byteLength || 4, gl.DYNAMIC_DRAW);
       gl.disable(gl.DEPTH_TEST);
       gl.enable(gl.BLEND);
       gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);
+      gen++;
     }
 
     try {
@@ -169,45 +158,6 @@ window.clothRenderer = (function () {
       }
     });
 
-    // Size the arrays (and GPU buffers) for a scene; only grows.
-    r.setScene = function (cloth) {
-      const ne = cloth.n_edges, nv = cloth.n_verts;
-      if (ne > edgeCap) {
-        edgeCap = ne;
-        edgeData = new Float32Array(6 * ne);
-        gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
-        gl.bufferData(gl.ARRAY_BUFFER, edgeData.byteLength, gl.DYNAMIC_DRAW);
-      }
-      if (nv > markCap) {
-        markCap = nv;
-        markData = new Float32Array(3 * nv);
-        gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
-        gl.bufferData(gl.ARRAY_BUFFER, markData.byteLength, gl.DYNAMIC_DRAW);
-      }
-      edgeView = edgeData.subarray(0, 6 * ne);
-      spacing = cloth.spacing > 0 ? cloth.spacing : 1;
-    };
-
-    // Half the edge width in device pixels. At least one device pixel on ordinary
-    // grids, so every edge has a fully covered core pixel; on dense grids edges thin
-    // out (down to half a pixel, antialiased) so the cells stay open.
-    function halfWidth(px) {
-      const cell = spacing * s;
-      if (cell >= DENSE_CELL_CSS) return Math.max(EDGE_HALF_WIDTH_CSS * px, 1.0);
-      return Math.max(Math.max(0.3, 0.1 * cell) * px, 0.5);
-    }
-
-    // Fit the view box inside the canvas less a small inset, keeping aspect.
-    function fit() {
-      const bw = Math.max(view.x1 - view.x0, 1e-9), bh = Math.max(view.y1 - view.y0, 1e-9);
-      const inset = Math.min(16, r.cssWidth / 8, r.cssHeight / 8);
-      s = Math.max(Math.min((r.cssWidth - 2 * inset) / bw, (r.cssHeight - 2 * inset) / bh), 1e-9);
-      ox = r.cssWidth / 2 - s * (view.x0 + view.x1) / 2;
-      oy = r.cssHeight / 2 + s * (view.y0 + view.y1) / 2;
-    }
-
-    r.setView = function (box) { view = { x0: box.x0, x1: box.x1, y0: box.y0, y1: box.y1 }; fit(); };
-
     // Match the drawing buffer to the canvas's CSS size times devicePixelRatio
     // (pixel-exact when the browser reports device-pixel sizes).
     r.resize = function (cssW, cssH, devW, devH) {
@@ -218,110 +168,210 @@ window.clothRenderer = (function () {
       const h = Math.max(1, devH || Math.round(r.cssHeight * r.dpr));
       if (canvas.width !== w) canvas.width = w;
       if (canvas.height !== h) canvas.height = h;
-      fit();
+      panels.forEach(function (p) { p.fit(); });
     };
 
-    r.pixelsPerMetre = function () { return s; };
-    // CSS pixels relative to the canvas's top-left corner.
-    r.toCanvas = function (x, y) { return [ox + s * x, oy - s * y]; };
-    r.toWorld = function (cx, cy) { return [(cx - ox) / s, (oy - cy) / s]; };
-
-    // The hot path: refill the arrays in place, upload, two draw calls.
-    r.draw = function (cloth, mode, scale) {
+    // Clear the whole canvas: a frame starts here, then each panel draws into its rectangle.
+    r.begin = function () {
+      r.drawCalls = 0;
       if (r.lost || gl.isContextLost()) return;
-      const ne = Math.min(cloth.n_edges, edgeCap), nv = Math.min(cloth.n_verts, markCap);
-      const pos = cloth.pos, ea = cloth.edge_a, eb = cloth.edge_b;
-      const ed = edgeData;
-      const stressMode = mode === 'stress';
-      if (stressMode) {
-        const q = cloth.stress;
-        for (let e = 0, o = 0; e < ne; e++, o += 6) {
-          const a = ea[e], b = eb[e];
-          ed[o] = pos[2 * a]; ed[o + 1] = pos[2 * a + 1];
-          ed[o + 2] = pos[2 * b]; ed[o + 3] = pos[2 * b + 1];
-          ed[o + 4] = q[a]; ed[o + 5] = q[b];
-        }
-      } else {
-        const diff = cloth.diff;
-        for (let e = 0, o = 0; e < ne; e++, o += 6) {
-          const a = ea[e], b = eb[e];
-          const v = Math.abs(diff[e]);
-          ed[o] = pos[2 * a]; ed[o + 1] = pos[2 * a + 1];
-          ed[o + 2] = pos[2 * b]; ed[o + 3] = pos[2 * b + 1];
-          ed[o + 4] = v; ed[o + 5] = v;
-        }
-      }
-      const pinned = cloth.pinned, held = cloth.held, md = markData;
-      let m = 0;
-      for (let k = 0; k < nv; k++) {
-        const p = pinned[k], h = held[k];
-        if (p === 0 && h === 0) continue;
-        md[3 * m] = pos[2 * k]; md[3 * m + 1] = pos[2 * k + 1];
-        md[3 * m + 2] = h === 0 ? 0 : (p === 0 ? 1 : 2);
-        m++;
-      }
-      nEdges = ne; nMarks = m;
-
-      const W = canvas.width, H = canvas.height, px = W / r.cssWidth;
-      gl.viewport(0, 0, W, H);
+      gl.viewport(0, 0, canvas.width, canvas.height);
       gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
       gl.clear(gl.COLOR_BUFFER_BIT);
-      r.drawCalls = 0;
-
-      if (nEdges > 0) {
-        gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
-        gl.bufferSubData(gl.ARRAY_BUFFER, 0, edgeView);
-        gl.useProgram(edgeProg.prog);
-        const u = edgeProg.u;
-        gl.uniform2f(u.u_scale, s * px, -s * px);
-        gl.uniform2f(u.u_offset, ox * px, oy * px);
-        gl.uniform2f(u.u_viewport, W, H);
-        gl.uniform1f(u.u_halfWidth, halfWidth(px));
-        gl.uniform1f(u.u_mode, stressMode ? 1 : 0);
-        gl.uniform1f(u.u_invScale, scale > 1e-12 ? 1 / scale : 0);
-        gl.uniform1f(u.u_base, STRAIN_BASE);
-        gl.bindBuffer(gl.ARRAY_BUFFER, cornerBuf);
-        gl.enableVertexAttribArray(0);
-        gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
-        inst.divisor(0, 0);
-        gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
-        for (let i = 1; i <= 3; i++) { gl.enableVertexAttribArray(i); inst.divisor(i, 1); }
-        gl.vertexAttribPointer(1, 2, gl.FLOAT, false, 24, 0);
-        gl.vertexAttribPointer(2, 2, gl.FLOAT, false, 24, 8);
-        gl.vertexAttribPointer(3, 2, gl.FLOAT, false, 24, 16);
-        inst.draw(gl.TRIANGLE_STRIP, 0, 4, nEdges);
-        r.drawCalls++;
-        inst.divisor(3, 0);
-        gl.disableVertexAttribArray(3);
-      }
-      if (nMarks > 0) {
-        gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
-        // WebGL2 uploads just the used part with no view object; WebGL1 sends it all.
-        if (version === 2) gl.bufferSubData(gl.ARRAY_BUFFER, 0, markData, 0, 3 * nMarks);
-        else gl.bufferSubData(gl.ARRAY_BUFFER, 0, markData);
-        gl.useProgram(markProg.prog);
-        const u = markProg.u;
-        gl.uniform2f(u.u_scale, s * px, -s * px);
-        gl.uniform2f(u.u_offset, ox * px, oy * px);
-        gl.uniform2f(u.u_viewport, W, H);
-        gl.uniform1f(u.u_pinRadius, PIN_RADIUS_CSS * px);
-        gl.uniform1f(u.u_heldRadius, HELD_RADIUS_CSS * px);
-        gl.uniform1f(u.u_px, px);
-        gl.bindBuffer(gl.ARRAY_BUFFER, markCornerBuf);
-        gl.enableVertexAttribArray(0);
-        gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
-        inst.divisor(0, 0);
-        gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
-        gl.enableVertexAttribArray(1);
-        gl.enableVertexAttribArray(2);
-        inst.divisor(1, 1);
-        inst.divisor(2, 1);
-        gl.vertexAttribPointer(1, 2, gl.FLOAT, false, 12, 0);
-        gl.vertexAttribPointer(2, 1, gl.FLOAT, false, 12, 8);
-        inst.draw(gl.TRIANGLE_STRIP, 0, 4, nMarks);
-        r.drawCalls++;
-      }
     };
+
+    const panels = [];
+    // The drawing of panel i (compare mode draws several cloths side by side in one canvas,
+    // each in its own rectangle with its own view); made on first use.
+    r.panel = function (i) {
+      while (panels.length <= i) panels.push(makePanel());
+      return panels[i];
+    };
+
+    function makePanel() {
+      const p = {};
+      let edgeBuf = null, markBuf = null, bufGen = -1;
+      let edgeData = new Float32Array(0), markData = new Float32Array(0);
+      let edgeView = edgeData;  // edgeData's first 6 * n_edges floats, made once per scene
+      let edgeCap = 0, markCap = 0;
+      let view = { x0: 0, x1: 1, y0: -1, y1: 0 };
+      let spacing = 1;  // the grid's rest length, metres: sets the edge width
+      // The panel's rectangle in the canvas (CSS px; null: the whole canvas), and
+      // world -> canvas CSS pixels: cssX = ox + s * x, cssY = oy - s * y.
+      let rect = null;
+      let s = 1, ox = 0, oy = 0;
+
+      function buffers() {
+        if (bufGen === gen) return;
+        edgeBuf = gl.createBuffer();
+        gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
+        gl.bufferData(gl.ARRAY_BUFFER, edgeData.byteLength || 4, gl.DYNAMIC_DRAW);
+        markBuf = gl.createBuffer();
+        gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
+        gl.bufferData(gl.ARRAY_BUFFER, markData.byteLength || 4, gl.DYNAMIC_DRAW);
+        bufGen = gen;
+      }
+
+      function box() {
+        return rect || { x: 0, y: 0, w: r.cssWidth, h: r.cssHeight };
+      }
+
+      // Fit the view box inside the panel's rectangle less a small inset, keeping aspect.
+      p.fit = function () {
+        const b = box();
+        const bw = Math.max(view.x1 - view.x0, 1e-9), bh = Math.max(view.y1 - view.y0, 1e-9);
+        const inset = Math.min(16, b.w / 8, b.h / 8);
+        s = Math.max(Math.min((b.w - 2 * inset) / bw, (b.h - 2 * inset) / bh), 1e-9);
+        ox = b.x + b.w / 2 - s * (view.x0 + view.x1) / 2;
+        oy = b.y + b.h / 2 + s * (view.y0 + view.y1) / 2;
+      };
+
+      // Size the arrays (and GPU buffers) for a scene; only grows.
+      p.setScene = function (cloth) {
+        buffers();
+        const ne = cloth.n_edges, nv = cloth.n_verts;
+        if (ne > edgeCap) {
+          edgeCap = ne;
+          edgeData = new Float32Array(6 * ne);
+          gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
+          gl.bufferData(gl.ARRAY_BUFFER, edgeData.byteLength, gl.DYNAMIC_DRAW);
+        }
+        if (nv > markCap) {
+          markCap = nv;
+          markData = new Float32Array(3 * nv);
+          gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
+          gl.bufferData(gl.ARRAY_BUFFER, markData.byteLength, gl.DYNAMIC_DRAW);
+        }
+        edgeView = edgeData.subarray(0, 6 * ne);
+        spacing = cloth.spacing > 0 ? cloth.spacing : 1;
+      };
+
+      p.setView = function (b) { view = { x0: b.x0, x1: b.x1, y0: b.y0, y1: b.y1 }; p.fit(); };
+      // The panel's rectangle, CSS px inside the canvas (null: all of it).
+      p.setRect = function (x, y, w, h) {
+        rect = w === undefined ? null : { x: x, y: y, w: Math.max(w, 1), h: Math.max(h, 1) };
+        p.fit();
+      };
+      p.rect = function () { return box(); };
+      p.contains = function (cx, cy) {
+        const b = box();
+        return cx >= b.x && cx < b.x + b.w && cy >= b.y && cy < b.y + b.h;
+      };
+      p.pixelsPerMetre = function () { return s; };
+      // CSS pixels relative to the canvas's top-left corner.
+      p.toCanvas = function (x, y) { return [ox + s * x, oy - s * y]; };
+      p.toWorld = function (cx, cy) { return [(cx - ox) / s, (oy - cy) / s]; };
+
+      // Half the edge width in device pixels. At least one device pixel on ordinary
+      // grids, so every edge has a fully covered core pixel; on dense grids edges thin
+      // out (down to half a pixel, antialiased) so the cells stay open.
+      function halfWidth(px) {
+        const cell = spacing * s;
+        if (cell >= DENSE_CELL_CSS) return Math.max(EDGE_HALF_WIDTH_CSS * px, 1.0);
+        return Math.max(Math.max(0.3, 0.1 * cell) * px, 0.5);
+      }
+
+      // The hot path: refill the arrays in place, upload, two draw calls into the
+      // panel's rectangle (after r.begin()).
+      p.draw = function (cloth, mode, scale) {
+        if (r.lost || gl.isContextLost()) return;
+        buffers();
+        const ne = Math.min(cloth.n_edges, edgeCap), nv = Math.min(cloth.n_verts, markCap);
+        const pos = cloth.pos, ea = cloth.edge_a, eb = cloth.edge_b;
+        const ed = edgeData;
+        const stressMode = mode === 'stress';
+        if (stressMode) {
+          const q = cloth.stress;
+          for (let e = 0, o = 0; e < ne; e++, o += 6) {
+            const a = ea[e], b = eb[e];
+            ed[o] = pos[2 * a]; ed[o + 1] = pos[2 * a + 1];
+            ed[o + 2] = pos[2 * b]; ed[o + 3] = pos[2 * b + 1];
+            ed[o + 4] = q[a]; ed[o + 5] = q[b];
+          }
+        } else {
+          const diff = cloth.diff;
+          for (let e = 0, o = 0; e < ne; e++, o += 6) {
+            const a = ea[e], b = eb[e];
+            const v = Math.abs(diff[e]);
+            ed[o] = pos[2 * a]; ed[o + 1] = pos[2 * a + 1];
+            ed[o + 2] = pos[2 * b]; ed[o + 3] = pos[2 * b + 1];
+            ed[o + 4] = v; ed[o + 5] = v;
+          }
+        }
+        const pinned = cloth.pinned, held = cloth.held, md = markData;
+        let nMarks = 0;
+        for (let k = 0; k < nv; k++) {
+          const pk = pinned[k], h = held[k];
+          if (pk === 0 && h === 0) continue;
+          md[3 * nMarks] = pos[2 * k]; md[3 * nMarks + 1] = pos[2 * k + 1];
+          md[3 * nMarks + 2] = h === 0 ? 0 : (pk === 0 ? 1 : 2);
+          nMarks++;
+        }
+
+        // The panel's rectangle in device pixels (GL's y runs up); the shaders work in
+        // device pixels of that rectangle.
+        const px = canvas.width / r.cssWidth, b = box();
+        const vx = Math.round(b.x * px), vw = Math.round((b.x + b.w) * px) - vx;
+        const vtop = Math.round(b.y * px), vh = Math.round((b.y + b.h) * px) - vtop;
+        gl.viewport(vx, canvas.height - vtop - vh, vw, vh);
+        const offX = (ox - b.x) * px + (b.x * px - vx), offY = (oy - b.y) * px + (b.y * px - vtop);
+
+        if (ne > 0) {
+          gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
+          gl.bufferSubData(gl.ARRAY_BUFFER, 0, edgeView);
+          gl.useProgram(edgeProg.prog);
+          const u = edgeProg.u;
+          gl.uniform2f(u.u_scale, s * px, -s * px);
+          gl.uniform2f(u.u_offset, offX, offY);
+          gl.uniform2f(u.u_viewport, vw, vh);
+          gl.uniform1f(u.u_halfWidth, halfWidth(px));
+          gl.uniform1f(u.u_mode, stressMode ? 1 : 0);
+          gl.uniform1f(u.u_invScale, scale > 1e-12 ? 1 / scale : 0);
+          gl.uniform1f(u.u_base, STRAIN_BASE);
+          gl.bindBuffer(gl.ARRAY_BUFFER, cornerBuf);
+          gl.enableVertexAttribArray(0);
+          gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
+          inst.divisor(0, 0);
+          gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
+          for (let i = 1; i <= 3; i++) { gl.enableVertexAttribArray(i); inst.divisor(i, 1); }
+          gl.vertexAttribPointer(1, 2, gl.FLOAT, false, 24, 0);
+          gl.vertexAttribPointer(2, 2, gl.FLOAT, false, 24, 8);
+          gl.vertexAttribPointer(3, 2, gl.FLOAT, false, 24, 16);
+          inst.draw(gl.TRIANGLE_STRIP, 0, 4, ne);
+          r.drawCalls++;
+          inst.divisor(3, 0);
+          gl.disableVertexAttribArray(3);
+        }
+        if (nMarks > 0) {
+          gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
+          // WebGL2 uploads just the used part with no view object; WebGL1 sends it all.
+          if (version === 2) gl.bufferSubData(gl.ARRAY_BUFFER, 0, markData, 0, 3 * nMarks);
+          else gl.bufferSubData(gl.ARRAY_BUFFER, 0, markData);
+          gl.useProgram(markProg.prog);
+          const u = markProg.u;
+          gl.uniform2f(u.u_scale, s * px, -s * px);
+          gl.uniform2f(u.u_offset, offX, offY);
+          gl.uniform2f(u.u_viewport, vw, vh);
+          gl.uniform1f(u.u_pinRadius, PIN_RADIUS_CSS * px);
+          gl.uniform1f(u.u_heldRadius, HELD_RADIUS_CSS * px);
+          gl.uniform1f(u.u_px, px);
+          gl.bindBuffer(gl.ARRAY_BUFFER, markCornerBuf);
+          gl.enableVertexAttribArray(0);
+          gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
+          inst.divisor(0, 0);
+          gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
+          gl.enableVertexAttribArray(1);
+          gl.enableVertexAttribArray(2);
+          inst.divisor(1, 1);
+          inst.divisor(2, 1);
+          gl.vertexAttribPointer(1, 2, gl.FLOAT, false, 12, 0);
+          gl.vertexAttribPointer(2, 1, gl.FLOAT, false, 12, 8);
+          inst.draw(gl.TRIANGLE_STRIP, 0, 4, nMarks);
+          r.drawCalls++;
+        }
+      };
+      return p;
+    }
 
     // RGBA of the device pixel under canvas-relative CSS coordinates (tests only;
     // valid right after draw() in the same task).

@@ -17,6 +17,8 @@ window.clothScenes = (function () {
     gravity: { min: -100, max: 100, int: false, label: 'Gravity' },
     damping: { min: 0, max: 100, int: false, label: 'Damping' },
     fullScale: { min: 0.0001, max: 1, int: false, label: 'Full scale' },
+    // The strain past which an edge breaks; empty, `off` or 0: no tearing.
+    tear: { min: 0.01, max: 100, int: false, label: 'Tear', off: true },
   };
 
   // Each solver's own substeps and iterations (mirrors cloth/scene.py's
@@ -31,7 +33,7 @@ window.clothScenes = (function () {
   // The Solver menu switches to the seed's method, which drapes and stretches.
   // damping, air: a released cloth comes to rest within a few seconds, as fabric does
   // (its velocity loses 1/s of itself per second); the core's default, 0, swings for minutes.
-  const DEFAULT_PARAMS = { solver: 'xpbd', substeps: 8, iterations: 1, gravity: -9.81, damping: 1 };
+  const DEFAULT_PARAMS = { solver: 'xpbd', substeps: 8, iterations: 1, gravity: -9.81, damping: 1, tear: 0 };
 
   function topRow(cols, every) {
     const pins = [];
@@ -87,6 +89,14 @@ window.clothScenes = (function () {
       size: 2.0,
       pins: function (cols) { return spread(cols, 5); },
     },
+    // Made to be torn: pull a vertex well past where the cloth can reach (its edges break
+    // past 30% strain), or cut it (Alt+drag, or the Cut tool).
+    tearable: {
+      label: 'Tearable',
+      params: { cols: 60, rows: 40, tear: 0.3 },
+      size: 2.0,
+      pins: function (cols) { return topRow(cols, 3); },
+    },
   };
 
   function spacingFor(preset, cols, rows) {
@@ -112,6 +122,7 @@ window.clothScenes = (function () {
       solver: p.solver,
       damping: p.damping,
     };
+    if (p.tear > 0) scene.tear = p.tear;
     if (preset.actions) scene.actions = preset.actions(p.cols, p.rows, spacing);
     const w = (p.cols - 1) * spacing, h = (p.rows - 1) * spacing;
     const view = preset.view ? preset.view(w, h) : viewFor(scene, preset.sag);
@@ -174,6 +185,10 @@ window.clothScenes = (function () {
     const lim = LIMITS[key];
     // Number('') and Number('  ') are 0: an empty field is no number, not a zero.
     const text = raw === null || raw === undefined ? '' : String(raw).trim();
+    // A field the browser could not read a number from arrives as null: that is no number,
+    // even where an empty field means off.
+    if (lim.off && raw !== null && raw !== undefined &&
+        (text === '' || text.toLowerCase() === 'off' || Number(text) === 0)) return { value: 0, note: '' };
     let v = text === '' ? NaN : Number(text);
     if (!Number.isFinite(v)) {
       const shown = text === '' ? '' : ' ("' + text.slice(0, 24) + '")';

@@ -134,6 +134,28 @@ window.clothShare = (function () {
     return navigator.clipboard.writeText(text);
   }
 
+  // The same for text that is still being made (a Promise of it). WebKit lets a page write
+  // the clipboard only within the task of the person's key press or click: a writeText after
+  // a promise (CompressionStream's) is refused there. A ClipboardItem given the promise starts
+  // the write in that task; where there is none, or the write is refused, the text is written
+  // once it is made. Call it from the key or click handler itself.
+  function copyLater(made) {
+    if (window.ClipboardItem && navigator.clipboard && navigator.clipboard.write) {
+      let item;
+      try {
+        item = new ClipboardItem({ 'text/plain': made.then(function (t) { return new Blob([t], { type: 'text/plain' }); }) });
+      } catch (e) {
+        item = null;
+      }
+      if (item) {
+        return navigator.clipboard.write([item]).catch(function (err) {
+          return made.then(function (t) { return copy(t); }, function () { throw err; });
+        });
+      }
+    }
+    return made.then(copy);
+  }
+
   return { MAX_LINK: MAX_LINK, linkFor: linkFor, sceneIn: sceneIn, decode: decode,
-           readFile: readFile, download: download, copy: copy, badByte: badByte };
+           readFile: readFile, download: download, copy: copy, copyLater: copyLater, badByte: badByte };
 })();

@@ -4,7 +4,7 @@
 'use strict';
 
 window.clothUI = (function () {
-  const PRESET_KEYS = { '1': 'curtain', '2': 'corners', '3': 'chain', '4': 'large' };
+  const PRESET_KEYS = { '1': 'curtain', '2': 'corners', '3': 'chain', '4': 'large', '5': 'tearable' };
   const ACTION_KEYS = { p: 'replay', e: 'exportFile', l: 'copyLink' };
 
   function $(id) { return document.getElementById(id); }
@@ -50,7 +50,7 @@ window.clothUI = (function () {
 
   // h: {pause, step, reset, preset(name), solver(name), param(key, raw), mode(m), scaleMode(m),
   //     fullScale(raw), loadJson(text), currentJson() -> text, replay, exportFile, copyLink,
-  //     openFile(file)}
+  //     openFile(file), charts(on), cutTool(on)}
   function create(h) {
     const el = {
       pause: $('btn-pause'), step: $('btn-step'), reset: $('btn-reset'), help: $('btn-help'),
@@ -64,7 +64,7 @@ window.clothUI = (function () {
       recStatus: $('rec-status'), replay: $('r-replay'), replayFrame: $('r-replay-frame'), replayEnd: $('r-replay-end'),
       fileInput: $('file-input'),
     };
-    const params = ['cols', 'rows', 'iterations', 'substeps', 'gravity', 'damping'];
+    const params = ['cols', 'rows', 'iterations', 'substeps', 'gravity', 'damping', 'tear'];
     let noteTimer = 0;
     let legendName = 'edge |diff|';
     let helpReturn = null;
@@ -105,6 +105,8 @@ window.clothUI = (function () {
       try { h.loadJson(el.json.value); } catch (e) { /* shown in the banner */ }
     });
     el.showJson.addEventListener('click', function () { el.json.value = h.currentJson(); });
+    $('charts-on').addEventListener('change', function () { h.charts($('charts-on').checked); });
+    $('btn-cut').addEventListener('click', function () { h.cutTool(); });
     $('btn-replay').addEventListener('click', function () { h.replay(); });
     $('btn-export').addEventListener('click', function () { h.exportFile(); });
     $('btn-link').addEventListener('click', function () { h.copyLink(); });
@@ -161,6 +163,7 @@ window.clothUI = (function () {
       else if (Object.prototype.hasOwnProperty.call(PRESET_KEYS, k)) h.preset(PRESET_KEYS[k]);
       else if (Object.prototype.hasOwnProperty.call(ACTION_KEYS, k.toLowerCase())) h[ACTION_KEYS[k.toLowerCase()]]();
       else if (k === 'o' || k === 'O') el.fileInput.click();
+      else if (k === 'x' || k === 'X') h.cutTool();
       else handled = false;
       if (handled) e.preventDefault();
     });
@@ -173,7 +176,15 @@ window.clothUI = (function () {
 
     const ui = {
       setParams: function (p) {
-        params.forEach(function (key) { if (p[key] !== undefined) $(key).value = String(p[key]); });
+        params.forEach(function (key) {
+          if (p[key] === undefined) return;
+          // tear 0 is no tearing: the field shows its placeholder, "off"
+          $(key).value = key === 'tear' && !(p[key] > 0) ? '' : String(p[key]);
+        });
+      },
+      setCutTool: function (on) {
+        $('btn-cut').setAttribute('aria-pressed', on ? 'true' : 'false');
+        $('btn-cut').classList.toggle('on', on);
       },
       setPreset: function (name) { el.preset.value = name; },
       setSolver: function (name) { $('solver').value = name; },

@@ -1,9 +1,11 @@
 """Regenerate docs/screenshot.png from dist/index.html (not a test).
 
     python tests/browser/screenshot.py [--mode strain|stress] [--out docs/screenshot.png]
+    python tests/browser/screenshot.py --compare --out docs/compare.png
 
 Loads the "two corners" preset, lets it settle, pulls a bottom vertex down and to the
-side with the mouse and photographs the page while the vertex is held.
+side with the mouse and photographs the page while the vertex is held. With --compare, the
+seed's method and the default side by side under the same hand.
 """
 import argparse
 import os
@@ -18,6 +20,7 @@ def main():
     ap.add_argument('--mode', default='strain', choices=['strain', 'stress'])
     ap.add_argument('--solver', default='jakobsen', choices=['jakobsen', 'xpbd'])
     ap.add_argument('--out', default=str(ROOT / 'docs' / 'screenshot.png'))
+    ap.add_argument('--compare', action='store_true', help='seed vs default, side by side')
     args = ap.parse_args()
     from playwright.sync_api import sync_playwright
     with sync_playwright() as p:
@@ -31,6 +34,8 @@ def main():
         page.evaluate("(m) => clothApp.setColorMode(m)", args.mode)
         if args.solver != 'jakobsen':
             page.evaluate("(s) => clothApp.setSolver(s)", args.solver)
+        if args.compare:
+            page.click('#btn-compare-pair')
         page.evaluate('clothApp.setPaused(true)')
         page.evaluate('clothApp.advance(240)')
         st = page.evaluate('clothApp.state()')
@@ -39,9 +44,10 @@ def main():
         x, y = st['screen'][k]
         page.mouse.move(x, y)
         page.mouse.down()
-        page.mouse.move(x - 110, y + 35, steps=8)
+        dx, dy = (90, -120) if args.compare else (-110, 35)
+        page.mouse.move(x + dx, y + dy, steps=8)
         page.evaluate('clothApp.setPaused(false)')
-        page.wait_for_timeout(1500)                      # readouts and legend fill in
+        page.wait_for_timeout(3000 if args.compare else 1500)   # readouts, legend, charts fill in
         os.makedirs(os.path.dirname(args.out), exist_ok=True)
         page.screenshot(path=args.out)
         page.mouse.up()

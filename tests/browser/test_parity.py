@@ -119,6 +119,20 @@ SCENES = {
         {'frame': 12, 'op': 'set', 'scene': {'solver': 'xpbd', 'dt': 0.02, 'compliance': 1e-4}}]), 30),
     'recording-frames-key': (grid(6, 5, pins=[0, 5], frames=33, actions=[
         {'frame': 33, 'op': 'grab', 'vertex': 20, 'to': [0.1, 0.2]}]), None),
+    # Tearing past a limit while pulled far beyond reach, and blades through the cloth (a piece
+    # cut off falls free; the tethers, cells and lines work on what remains).
+    'tear-pulled-beyond-reach': (grid(10, 8, pins=[0, 3, 6, 9], tear=0.25, actions=[
+        {'frame': 10, 'op': 'grab', 'vertex': 75},
+        {'frame': 11, 'op': 'move', 'vertex': 75, 'to': [0.6, -4.0]},
+        {'frame': 50, 'op': 'release', 'vertex': 75}]), 90),
+    'cuts-and-falling-pieces': (grid(9, 9, pins=[0, 4, 8], shear=True, actions=[
+        {'frame': 20, 'op': 'cut', 'from': [-0.2, -0.43], 'to': [1.2, -0.47]},
+        {'frame': 25, 'op': 'cut', 'from': [0.55, 0.2], 'to': [0.55, -1.5]},
+        {'frame': 30, 'op': 'grab', 'vertex': 40},
+        {'frame': 31, 'op': 'cut', 'from': [0.3, -0.6], 'to': [0.7, -0.2]},
+        {'frame': 40, 'op': 'release', 'vertex': 40}]), 80),
+    'seed-tear-and-cut': (grid(8, 8, pins=[0, 7], solver='jakobsen', tear=0.05, actions=[
+        {'frame': 15, 'op': 'cut', 'from': [0.2, 0.1], 'to': [0.25, -1.2]}]), 60),
 }
 
 
@@ -172,13 +186,18 @@ def scenes(draw):
                           ('shear', st.booleans()), ('compliance', st.sampled_from([0, 1e-4, 0.01])),
                           ('tolerance', st.sampled_from([0, 1e-3])), ('sleep', st.booleans()),
                           ('dt', st.sampled_from([1 / 60, 0.25])),
+                          ('tear', st.sampled_from([0.01, 0.1, 0.5, 2.0])),
                           ('gravity', st.tuples(coord, st.floats(-30, 30)).map(list))]:
         if draw(st.booleans()):
             s[key] = draw(strategy)
     actions, held = [], set()
     for _ in range(draw(st.integers(0, 8))):
         frame = draw(st.integers(0, 12))
-        op = draw(st.sampled_from(['grab', 'move', 'release', 'pin', 'unpin', 'set']))
+        op = draw(st.sampled_from(['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut']))
+        if op == 'cut':
+            actions.append({'frame': frame, 'op': 'cut', 'from': [draw(coord), draw(coord)],
+                            'to': [draw(coord), draw(coord)]})
+            continue
         if op == 'set':
             keys = {}
             for key, strategy in [('substeps', st.integers(1, 4)), ('iterations', st.integers(0, 8)),

@@ -1,0 +1,213 @@
+"""Issue #14 in the page: solvers side by side under the same hands, one colour scale, live
+charts, compare mode recorded and replayed per panel. Real pointer input (Playwright's mouse,
+touch through CDP); the CLI's `--panel N` replays each panel."""
+import json
+import subprocess
+import sys
+import time
+
+from browser_helpers import ROOT
+
+PAIR = [{'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}, {'solver': 'xpbd', 'substeps': 8, 'iterations': 1}]
+COLS, ROWS = 40, 30           # the curtain preset
+BOTTOM = 29 * 40 + 20
+
+
+def wait_until(pg, expr, timeout=20.0):
+    end = time.time() + timeout
+    while time.time() < end:
+        if pg.js(expr):
+            return
+        time.sleep(0.03)
+    raise AssertionError('timed out waiting for ' + expr)
+
+
+def panels(pg):
+    return pg.js('clothApp.panels()')
+
+
+def cli(text, *args):
+    done = subprocess.run([sys.executable, '-m', 'cloth', 'run', '-', *args], cwd=ROOT,
+                          input=text.encode(), capture_output=True)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+def test_seed_vs_default_in_one_click_and_back(open_page):
+    pg = open_page()
+    single = pg.state()['positions']
+    pg.locator('#btn-compare-pair').click()
+    ps = panels(pg)
+    assert [p['label'] for p in ps] == ['jakobsen S1 x 20', 'xpbd S8 x 1, tethers, cells, lines, tol 0.0001']
+    assert json.loads(ps[0]['scene'])['iterations'] == 20 and 'compare' not in json.loads(ps[0]['scene'])
+    assert pg.info()['panels'] == 2 and len(pg.locator('.panel-label:visible').all()) == 2
+    # side by side or stacked, whichever fits the stage better: the cloths do not overlap
+    def box(p):
+        xs, ys = [x for x, _ in p['screen']], [y for _, y in p['screen']]
+        return min(xs), min(ys), max(xs), max(ys)
+    a, b = box(ps[0]), box(ps[1])
+    assert a[2] < b[0] or a[3] < b[1]
+    pg.locator('#btn-compare-off').click()
+    assert pg.info()['panels'] == 1 and len(pg.state()['positions']) == len(single)
+    assert len(pg.locator('.panel-label:visible').all()) == 0
+
+
+def test_a_drag_in_panel_2_moves_the_same_vertex_to_the_same_place_in_panel_1(open_page):
+    pg = open_page()
+    pg.js('(l) => clothApp.compare(l)', PAIR)
+    pg.js('clothApp.setPaused(true)')
+    pg.js('clothApp.advance(60)')
+    x, y = panels(pg)[1]['screen'][BOTTOM]
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    pg.js('clothApp.setPaused(false)')
+    seed, default = [], []
+    for i in range(1, 12):
+        pg.mouse.move(x + 6 * i, y - 4 * i)
+        pg.wait_for_timeout(40)
+        ps = panels(pg)
+        assert abs(ps[1]['screen'][BOTTOM][0] - (x + 6 * i)) < 0.01
+        assert abs(ps[1]['screen'][BOTTOM][1] - (y - 4 * i)) < 0.01
+        assert ps[0]['positions'][BOTTOM] == ps[1]['positions'][BOTTOM]    # the same doubles
+        seed.append(ps[0]['rms_strain'])
+        default.append(ps[1]['rms_strain'])
+    # over the drag the seed's 20 sweeps stretch more than the default (measured on this
+    # curtain: about 0.034 against 0.014; at the first frames of a fast jerk the default's
+    # strain can spike above the seed's, so the mean over the drag is what is compared)
+    assert sum(seed) > 1.5 * sum(default), (seed, default)
+    pg.mouse.up()
+
+
+def test_one_scale_is_the_largest_over_the_panels(open_page):
+    pg = open_page()
+    pg.js('(l) => clothApp.compare(l)', PAIR)
+    pg.js('clothApp.setPaused(true)')
+    x, y = panels(pg)[0]['screen'][BOTTOM]
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    pg.mouse.move(x + 60, y + 80, steps=4)      # pulled beyond reach: both strain
+    pg.js('clothApp.advance(5)')
+    for mode, key in [('strain', 'max_diff'), ('stress', 'max_stress')]:
+        pg.js('(m) => clothApp.setColorMode(m)', mode)
+        pg.js('clothApp.advance(1)')
+        ps = panels(pg)
+        assert ps[0][key] != ps[1][key]
+        assert pg.info()['scale'] == max(ps[0][key], ps[1][key], 0.01), mode
+    pg.mouse.up()
+
+
+def test_a_pin_toggled_in_one_panel_shows_in_all(open_page):
+    pg = open_page()
+    pg.js('(l) => clothApp.compare(l.concat([{"substeps": 2}]))', PAIR)
+    pg.js('clothApp.setPaused(true)')
+    k = 15 * COLS + 18
+    x, y = panels(pg)[2]['screen'][k]
+    pg.mouse.click(x, y, button='right')
+    ps = panels(pg)
+    assert [p['pinned'][k] for p in ps] == [True, True, True]
+    before = [p['positions'][k] for p in ps]
+    pg.js('clothApp.advance(60)')
+    assert [p['positions'][k] for p in panels(pg)] == before   # it holds still in every panel
+    x, y = panels(pg)[0]['screen'][k]
+    pg.mouse.click(x, y, button='right')
+    assert [p['pinned'][k] for p in panels(pg)] == [False, False, False]
+
+
+def test_the_charts_draw(open_page):
+    pg = open_page()
+    pg.js('(l) => clothApp.compare(l)', PAIR)
+    pg.wait_for_timeout(1500)                 # samples every 100 ms while running
+    lit = pg.js('''() => { const c = document.getElementById('charts');
+        const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+        const seen = {};
+        for (let i = 0; i < d.length; i += 4) {
+          if (d[i + 3] === 0) continue;
+          const key = d[i] + ',' + d[i + 1] + ',' + d[i + 2];
+          seen[key] = (seen[key] || 0) + 1;
+        }
+        return seen; }''')
+    # each panel's colour is drawn (line pixels in the panel's colour, from the chart code)
+    def near(rgb, hexcolor):
+        r, g, b = (int(hexcolor[i:i + 2], 16) for i in (1, 3, 5))
+        return abs(rgb[0] - r) + abs(rgb[1] - g) + abs(rgb[2] - b) < 40
+    colours = pg.js('[0, 1].map(i => window.clothCharts.COLORS[i])')
+    for colour in colours:
+        hits = sum(n for key, n in lit.items() if near([int(v) for v in key.split(',')], colour))
+        assert hits > 20, colour
+    # shown for a single cloth too
+    pg.js('clothApp.compare([])')
+    assert pg.locator('#charts').is_visible()
+    pg.locator('#charts-on').uncheck()
+    assert pg.locator('#charts').is_hidden()
+
+
+def test_compare_mode_recording_replays_per_panel_and_a_link_reopens_it(open_page):
+    pg = open_page()
+    pg.js('(l) => clothApp.compare(l.concat([{"substeps": 3, "tethers": false}]))', PAIR)
+    pg.js('clothApp.setPaused(true)')
+    x, y = panels(pg)[0]['screen'][BOTTOM]
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    for i in range(1, 10):
+        pg.mouse.move(x - 8 * i, y - 11 * i)
+        pg.js('clothApp.advance(2)')
+    pg.mouse.up()
+    pg.locator('#gravity').fill('-5')
+    pg.locator('#gravity').press('Enter')
+    pg.js('clothApp.advance(20)')
+    text = pg.js('clothApp.recording()')
+    rec = json.loads(text)
+    assert len(rec['compare']) == 3
+    ps = panels(pg)
+    for i in range(3):
+        assert cli(text, '--panel', str(i + 1))['positions'] == ps[i]['positions'], i
+    url = pg.js('clothApp.link()')
+    other = open_page()
+    other.goto(url)
+    wait_until(other, 'window.clothApp && clothApp.info().replay.ended')
+    assert other.info()['panels'] == 3
+    assert [p['positions'] for p in panels(other)] == [p['positions'] for p in ps]
+
+
+def test_a_resize_mid_drag_keeps_the_vertex_under_the_pointer_in_its_panel(open_page):
+    pg = open_page()
+    pg.js('(l) => clothApp.compare(l)', PAIR)
+    pg.js('clothApp.setPaused(true)')
+    x, y = panels(pg)[1]['screen'][BOTTOM]
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    pg.mouse.move(x + 20, y - 30)
+    for w, h in [(700, 900), (1200, 600), (900, 700)]:
+        pg.set_viewport_size({'width': w, 'height': h})
+        wait_until(pg, '(() => { const c = document.getElementById("view");'
+                       ' return Math.abs(c.getBoundingClientRect().width - (%d - (%d > 720 ? 280 : 0))) < 2; })()' % (w, w))
+        pg.wait_for_timeout(50)
+        sx, sy = panels(pg)[1]['screen'][BOTTOM]
+        assert abs(sx - (x + 20)) < 0.5 and abs(sy - (y - 30)) < 0.5, (w, h, sx, sy)
+    pg.mouse.up()
+
+
+def test_panel_settings_in_the_editor(open_page):
+    pg = open_page()
+    pg.locator('#btn-compare-pair').click()
+    pg.js('clothApp.setPaused(true)')
+    pg.js('clothApp.advance(30)')
+    sub = pg.locator('#compare-list input[data-key=substeps]').nth(1)
+    sub.fill('4')
+    sub.press('Enter')
+    assert json.loads(panels(pg)[1]['scene'])['substeps'] == 4
+    assert pg.info()['frames'] == 0                  # the comparison restarted
+    sub = pg.locator('#compare-list input[data-key=substeps]').nth(1)
+    sub.fill('99')
+    sub.press('Enter')
+    assert 'clamped to its maximum 16' in pg.info()['note']
+    assert json.loads(panels(pg)[1]['scene'])['substeps'] == 16
+    pg.locator('#btn-compare-add').click()
+    pg.locator('#btn-compare-add').click()
+    assert pg.info()['panels'] == 4 and pg.locator('#btn-compare-add').is_disabled()
+    pg.locator('#compare-list .compare-head button').nth(0).click()     # remove panel 1
+    assert pg.info()['panels'] == 3
+    pg.locator('#compare-list details summary').nth(0).click()         # the folded settings
+    sel = pg.locator('#compare-list select[data-key=tethers]').nth(0)
+    sel.select_option('false')
+    assert json.loads(panels(pg)[0]['scene'])['tethers'] is False

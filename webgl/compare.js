@@ -1,0 +1,208 @@
+// Compare mode's own parts: where the panels go in the canvas, the label over each panel,
+// and the editor of each panel's settings in the side panel. Holds no simulation state: the
+// app owns the panels' cloths and tells this what to show.
+//
+// A comparison is the scene's `compare` list (cloth/scene.py): 2 to 4 objects of scene keys,
+// one per panel, each written into the scene for that panel. The same hands act on every
+// panel (app.js), so the panels differ only by these settings.
+'use strict';
+
+window.clothCompare = (function () {
+  const MAX_PANELS = 4;
+  const GAP = 4;        // CSS px between panels
+  // The one-click pair: the seed's method against the default, each spelled out so that a
+  // scene that set its own solver does not make them the same.
+  const SEED_VS_DEFAULT = [{ solver: 'jakobsen', substeps: 1, iterations: 20 },
+                           { solver: 'xpbd', substeps: 8, iterations: 1 }];
+  // The keys the editor offers (cloth/scene.py COMPARE_KEYS has a few more for scenes).
+  const FIELDS = {
+    substeps: { min: 1, max: 16, int: true, label: 'Substeps' },
+    iterations: { min: 0, max: 200, int: true, label: 'Iterations' },
+    tolerance: { min: 0, max: 1, int: false, label: 'Tolerance' },
+    compliance: { min: 0, max: 1000, int: false, label: 'Compliance' },
+    damping: { min: 0, max: 100, int: false, label: 'Damping' },
+  };
+
+  // Rectangles for n panels in a w x h canvas (CSS px): the grid of columns x rows that
+  // gives each panel's view box (aspect bw / bh) the most pixels per metre; side by side on
+  // a wide screen, stacked on a tall or narrow one, 2 x 2 for four on a square one.
+  function layout(n, w, h, bw, bh) {
+    let best = null;
+    for (let cols = 1; cols <= n; cols++) {
+      const rows = Math.ceil(n / cols);
+      if ((cols - 1) * rows >= n) continue;   // an empty column
+      const pw = (w - GAP * (cols - 1)) / cols, ph = (h - GAP * (rows - 1)) / rows;
+      const scale = Math.min(pw / bw, ph / bh);
+      if (!best || scale > best.scale + 1e-9) best = { cols: cols, rows: rows, pw: pw, ph: ph, scale: scale };
+    }
+    const out = [];
+    for (let i = 0; i < n; i++) {
+      const c = i % best.cols, r = Math.floor(i / best.cols);
+      out.push({ x: c * (best.pw + GAP), y: r * (best.ph + GAP), w: best.pw, h: best.ph });
+    }
+    return out;
+  }
+
+  function $(id) { return document.getElementById(id); }
+
+  // h: {change(list, note) (a new compare list, [] leaves compare mode; note: what was
+  //     clamped), note(text)}
+  function create(h) {
+    const labels = $('panel-labels');
+    const list = $('compare-list');
+    let current = [];
+    const labelEls = [];
+
+    $('btn-compare-pair').addEventListener('click', function () { h.change(SEED_VS_DEFAULT.map(copy)); });
+    $('btn-compare-add').addEventListener('click', function () {
+      if (current.length >= MAX_PANELS) { h.note('Compare: at most ' + MAX_PANELS + ' panels'); return; }
+      const next = current.length ? current.map(copy) : [{}];
+      next.push(copy(next[next.length - 1]));
+      h.change(next);
+    });
+    $('btn-compare-off').addEventListener('click', function () { h.change([]); });
+
+    function copy(o) { return Object.assign({}, o); }
+
+    // A field's text -> its value for panel i's key, or a note and no change.
+    function edit(i, key, raw) {
+      const next = current.map(copy);
+      if (key === 'solver' || key === 'tethers' || key === 'shear') {
+        if (raw === '') delete next[i][key];
+        else next[i][key] = key === 'solver' ? raw : raw === 'true';
+        h.change(next);
+        return;
+      }
+      const f = FIELDS[key];
+      const text = raw === null ? null : String(raw).trim();
+      if (text === '') { delete next[i][key]; h.change(next); return; }
+      let v = text === null ? NaN : Number(text);
+      if (!Number.isFinite(v)) {
+        h.note('Panel ' + (i + 1) + ' ' + f.label + ': not a number; the old value is kept');
+        render(current);
+        return;
+      }
+      let note = '';
+      if (f.int && v !== Math.round(v)) { v = Math.round(v); note = ' rounded to ' + v; }
+      if (v < f.min) { v = f.min; note = ' clamped to its minimum ' + v; }
+      if (v > f.max) { v = f.max; note = ' clamped to its maximum ' + v; }
+      next[i][key] = v;
+      h.change(next, note ? 'Panel ' + (i + 1) + ' ' + f.label + note : '');
+    }
+
+    function field(i, key, value) {
+      const f = FIELDS[key];
+      const input = document.createElement('input');
+      input.type = 'number';
+      input.min = String(f.min); input.max = String(f.max);
+      input.step = f.int ? '1' : 'any';
+      input.placeholder = 'scene';
+      input.value = value === undefined ? '' : String(value);
+      input.setAttribute('aria-label', 'Panel ' + (i + 1) + ' ' + f.label);
+      input.dataset.key = key;
+      input.addEventListener('change', function () {
+        edit(i, key, input.validity && input.validity.badInput ? null : input.value);
+      });
+      const label = document.createElement('label');
+      label.textContent = f.label + ' ';
+      label.appendChild(input);
+      return label;
+    }
+
+    function choice(i, key, value, options, title) {
+      const sel = document.createElement('select');
+      sel.setAttribute('aria-label', 'Panel ' + (i + 1) + ' ' + title);
+      sel.dataset.key = key;
+      options.forEach(function (o) {
+        const opt = document.createElement('option');
+        opt.value = o[0]; opt.textContent = o[1];
+        sel.appendChild(opt);
+      });
+      sel.value = value === undefined ? '' : String(value);
+      sel.addEventListener('change', function () { edit(i, key, sel.value); });
+      const label = document.createElement('label');
+      label.textContent = title + ' ';
+      label.appendChild(sel);
+      return label;
+    }
+
+    // The editor: one block per panel (solver, substeps, iterations; the rest folded).
+    function render(overrides) {
+      current = overrides.map(copy);
+      list.textContent = '';
+      current.forEach(function (o, i) {
+        const box = document.createElement('div');
+        box.className = 'compare-panel';
+        box.style.borderLeftColor = window.clothCharts.COLORS[i];
+        const head = document.createElement('div');
+        head.className = 'compare-head';
+        const name = document.createElement('b');
+        name.textContent = 'Panel ' + (i + 1);
+        const remove = document.createElement('button');
+        remove.type = 'button';
+        remove.textContent = '×';
+        remove.title = 'Remove panel ' + (i + 1);
+        remove.addEventListener('click', function () {
+          const next = current.filter(function (_, j) { return j !== i; });
+          h.change(next.length >= 2 ? next : []);
+        });
+        head.appendChild(name);
+        head.appendChild(remove);
+        box.appendChild(head);
+        const grid = document.createElement('div');
+        grid.className = 'grid2';
+        grid.appendChild(choice(i, 'solver', o.solver, [['', 'scene\'s'], ['xpbd', 'XPBD (default)'], ['jakobsen', 'Jakobsen (seed)']], 'Solver'));
+        grid.appendChild(field(i, 'substeps', o.substeps));
+        grid.appendChild(field(i, 'iterations', o.iterations));
+        grid.appendChild(field(i, 'damping', o.damping));
+        box.appendChild(grid);
+        const more = document.createElement('details');
+        const sum = document.createElement('summary');
+        sum.textContent = 'more';
+        more.appendChild(sum);
+        const grid2 = document.createElement('div');
+        grid2.className = 'grid2';
+        const yesNo = [['', 'solver\'s'], ['true', 'on'], ['false', 'off']];
+        grid2.appendChild(choice(i, 'tethers', o.tethers, yesNo, 'Tethers'));
+        grid2.appendChild(choice(i, 'shear', o.shear, [['', 'scene\'s'], ['true', 'on'], ['false', 'off']], 'Shear'));
+        grid2.appendChild(field(i, 'tolerance', o.tolerance));
+        grid2.appendChild(field(i, 'compliance', o.compliance));
+        more.appendChild(grid2);
+        if (o.tethers !== undefined || o.shear !== undefined || o.tolerance !== undefined || o.compliance !== undefined) more.open = true;
+        box.appendChild(more);
+        list.appendChild(box);
+      });
+      $('btn-compare-off').disabled = current.length === 0;
+      $('btn-compare-add').disabled = current.length >= MAX_PANELS;
+    }
+
+    // Labels over the panels: number, setting, and the readouts (at the readout rate).
+    function placeLabels(rects) {
+      while (labelEls.length < rects.length) {
+        const el = document.createElement('div');
+        el.className = 'panel-label';
+        labels.appendChild(el);
+        labelEls.push(el);
+      }
+      for (let i = 0; i < labelEls.length; i++) {
+        const el = labelEls[i];
+        el.hidden = i >= rects.length || rects.length < 2;
+        if (el.hidden) continue;
+        const r = rects[i];
+        el.style.left = (r.x + 6) + 'px';      // the canvas fills the stage from its corner
+        el.style.top = (r.y + 6) + 'px';
+        el.style.maxWidth = Math.max(60, r.w - 12) + 'px';
+        el.style.borderLeftColor = window.clothCharts.COLORS[i];
+      }
+    }
+
+    function setLabel(i, text) {
+      if (i < labelEls.length && labelEls[i].textContent !== text) labelEls[i].textContent = text;
+    }
+
+    return { render: render, placeLabels: placeLabels, setLabel: setLabel,
+             overrides: function () { return current.map(copy); } };
+  }
+
+  return { create: create, layout: layout, SEED_VS_DEFAULT: SEED_VS_DEFAULT, MAX_PANELS: MAX_PANELS };
+})();
