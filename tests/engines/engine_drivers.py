@@ -6,16 +6,33 @@ back as JSON text, so doubles arrive exact), W3C pointer actions, the window siz
 screenshot. The recipe and its traps are in ../shared/notes/browser-testing.md.
 """
 import gc
+import glob
 import json
 import os
 import pathlib
+import select
+import shutil
 import subprocess
 import time
 
-FIREFOX = '/usr/bin/firefox-esr'
-MINIBROWSER = '/usr/lib/x86_64-linux-gnu/webkit2gtk-4.1/MiniBrowser'
-WEBKIT_DRIVER = '/usr/bin/WebKitWebDriver'
-XVFB = '/usr/bin/Xvfb'
+
+def _find(env, *candidates):
+    """$env if set (a path, or 'none' to pretend the engine is missing), else the first
+    candidate that exists: a command on PATH or a glob."""
+    if os.environ.get(env):
+        return os.environ[env]
+    for c in candidates:
+        found = shutil.which(c) if '/' not in c else next(iter(sorted(glob.glob(c))), None)
+        if found:
+            return found
+    return candidates[0]
+
+
+FIREFOX = _find('CLOTH_FIREFOX', 'firefox-esr', 'firefox')
+# Debian's webkit2gtk-driver: the driver on PATH, MiniBrowser in the multiarch library folder.
+MINIBROWSER = _find('CLOTH_MINIBROWSER', '/usr/lib/*/webkit2gtk-4.1/MiniBrowser', '/usr/lib/*/webkit2gtk-4.0/MiniBrowser')
+WEBKIT_DRIVER = _find('CLOTH_WEBKIT_DRIVER', 'WebKitWebDriver')
+XVFB = _find('CLOTH_XVFB', 'Xvfb')
 SCREEN = '1280x1024x24'
 
 # Evaluates an expression in the page's own realm: a function is called with the argument and
@@ -58,8 +75,9 @@ class Xvfb:
         os.close(write)
         number, end = b'', time.time() + 30
         while not number.endswith(b'\n'):
-            chunk = os.read(read, 16)
-            if not chunk or time.time() > end:
+            ready = select.select([read], [], [], max(0.0, end - time.time()))[0]
+            chunk = os.read(read, 16) if ready else b''
+            if not chunk:
                 self.stop()
                 raise RuntimeError('Xvfb did not start')
             number += chunk
@@ -78,7 +96,7 @@ class Xvfb:
 def missing(name):
     """Why engine `name` cannot run here ('' when it can)."""
     need = {'firefox': [FIREFOX, XVFB], 'webkit': [MINIBROWSER, WEBKIT_DRIVER, XVFB]}[name]
-    gone = [p for p in need if not os.path.exists(p)]
+    gone = [p for p in need if not (os.path.isfile(p) and os.access(p, os.X_OK))]
     module = {'firefox': 'marionette_driver', 'webkit': 'selenium'}[name]
     try:
         __import__(module)
@@ -118,6 +136,10 @@ class Engine:
 
     def pressed(self, button):
         """A mouse button goes down (WebKit keeps track: see WebKit.pressed)."""
+
+    def device_scale(self, factor):
+        """Make devicePixelRatio `factor` (1 or 2) for the pages opened from now on."""
+        raise NotImplementedError
 
     def restart(self):
         pass
@@ -209,6 +231,13 @@ class Firefox(Engine):
     def send_file(self, selector, path):
         self.m.find_element('css selector', selector).send_keys(path)
 
+    def device_scale(self, factor):
+        if factor == 1:
+            self.m.clear_pref('layout.css.devPixelsPerPx')
+        else:
+            self.m.set_pref('layout.css.devPixelsPerPx', str(float(factor)))
+        self.size = None
+
     def log_text(self):
         try:
             return self.log.read_text(encoding='utf-8', errors='replace')
@@ -228,6 +257,7 @@ class Firefox(Engine):
 
 class WebKit(Engine):
     name = 'webkit'
+    scale = 1
 
     def __init__(self, display, downloads):
         self.display, self.downloads = display, downloads
@@ -244,7 +274,7 @@ class WebKit(Engine):
         config = pathlib.Path(self.downloads).parent / 'xdg-config'
         config.mkdir(exist_ok=True)
         (config / 'user-dirs.dirs').write_text('XDG_DOWNLOAD_DIR="%s"\n' % self.downloads)
-        env = dict(os.environ, DISPLAY=self.display, XDG_CONFIG_HOME=str(config))
+        env = dict(os.environ, DISPLAY=self.display, XDG_CONFIG_HOME=str(config), GDK_SCALE=str(self.scale))
         self.log = pathlib.Path(self.downloads).parent / 'webkit.log'
         service = Service(executable_path=WEBKIT_DRIVER, log_output=str(self.log), env=env)
         self.d = webdriver.WebKitGTK(options=options, service=service)
@@ -281,9 +311,15 @@ class WebKit(Engine):
 
     def restart(self):
         """A new session (and MiniBrowser): the only way to let go of a stuck button."""
+        self.harvest()
         self.quit()
         self.start()
         self.current, self.size, self.stuck = None, None, ''
+
+    def device_scale(self, factor):
+        """GTK's scale is read once, at start: a new MiniBrowser."""
+        self.scale = factor
+        self.restart()
 
     # WebKit's automation releases every mouse button as the left one: SimulatedInputDispatcher
     # simulates pointerUp with the state after the release (no button: MouseButton::None), which

@@ -80,6 +80,28 @@ def test_opens_from_file_with_no_error_and_no_request(open_page, tmp_path):
     assert len(st['positions']) == COLS * ROWS == len(st['screen'])
 
 
+def test_the_harness_sees_what_goes_wrong_in_the_page(open_page, engine):
+    """The checks every test's teardown makes are not blind: a console.error, an uncaught
+    error, an unhandled rejection and a request (which the page's CSP blocks) all show."""
+    pg = open_page('?paused=1', expect_errors=True)
+    pg.js('''() => {
+        console.error('one console error');
+        setTimeout(() => { throw new Error('one uncaught error'); }, 0);
+        Promise.reject(new Error('one rejection'));
+        new Image().src = 'https://example.invalid/pixel.png';
+    }''')
+    errors = pg.wait_for_function('window.__engineErrors.length >= 4 && window.__engineErrors')
+    assert any(e.startswith('console.error: one console error') for e in errors), errors
+    # WebKit mutes the message of every uncaught error of a file:// page, the page's own
+    # scripts' too (tried: "Script error. (:0)"); the hook still sees that one happened.
+    assert any(e.startswith('error: ') and ('one uncaught error' in e or engine.name == 'webkit') for e in errors), errors
+    assert any(e.startswith('unhandledrejection: ') and 'one rejection' in e for e in errors), errors
+    assert any(e.startswith('csp: img-src') and 'example.invalid' in e for e in errors), errors
+    if engine.name == 'firefox':
+        pg.wait_for_timeout(200)
+        assert 'JavaScript error: file://' in engine.log_text() and 'one uncaught error' in engine.log_text()
+
+
 # ---- clothCore.run: the CLI's text, character for character ----------------------------------
 
 BAD = test_page.MALFORMED + ['{"cols": 2, "rows": 2, "spacing": 1, "a\\nb": 1}',
@@ -280,6 +302,33 @@ def test_a_resize_keeps_the_canvas_sharp_and_the_held_vertex_under_the_pointer(o
         pg.js('clothApp.advance(60)')
 
 
+def test_device_pixel_ratio_2_is_sharp_and_a_drag_exact(open_page, engine):
+    """devicePixelRatio 2: Firefox's layout.css.devPixelsPerPx, WebKitGTK's GDK_SCALE (a new
+    MiniBrowser)."""
+    engine.device_scale(2)
+    try:
+        pg = open_page('?paused=1', size=(600, 450))
+        assert pg.js('devicePixelRatio') == 2
+        wait_sharp(pg)
+        c = assert_sharp(pg)
+        assert c['width'] >= 2 * int(c['css'][0])
+        pg.js('clothApp.advance(240)')
+        k = free_vertex(pg.state(), COLS, ROWS)
+        x, y = pg.at(k)
+        pg.mouse.move(x, y)
+        pg.mouse.down()
+        k = pg.state()['held'].index(True)
+        for px, py in [(x + 33, y - 41), (x - 60, y + 20)]:
+            pg.mouse.move(px, py)
+            pg.js('clothApp.advance(2)')
+            assert near(pg.state()['screen'][k], (px, py)), (pg.state()['screen'][k], (px, py))
+        pg.mouse.up()
+        px = pg.js('(p) => clothApp.pixels(p)', [[round(a), round(b)] for a, b in pg.state()['screen'][::9]])
+        assert sum(1 for c in px if c[0] > 60) > len(px) // 2       # drawn at this scale too
+    finally:
+        engine.device_scale(1)
+
+
 # ---- input: touch and pen ------------------------------------------------------------------
 
 DISPATCH = '''([type, kind, id, x, y]) => {
@@ -334,14 +383,17 @@ class Finger:
 
 
 def test_a_touch_drag_and_a_double_tap_pin(open_page):
-    pg = open_page('?paused=1')
-    pg.js('clothApp.advance(240)')
+    """Touch actions in Firefox, Pointer Events dispatched in the page in WebKit (Finger);
+    the recording of both replays in the CLI bit for bit."""
+    pg = open_page()
+    rec.load_small(pg)                       # 12x9: the CLI replays it in a moment
+    pg.js('clothApp.advance(120)')
     finger = Finger(pg)
-    k = free_vertex(pg.state(), COLS, ROWS)
-    x, y = pg.at(k)
+    x, y = pg.at(8 * 12 + 6)
+    before = pg.state()
     finger.down(x, y)
     held = [i for i, h in enumerate(pg.state()['held']) if h]
-    assert len(held) == 1
+    assert len(held) == 1 and pg.state()['positions'] == before['positions']
     k = held[0]
     for i in range(1, 9):
         finger.move(x + 12 * i, y - 9 * i)
@@ -352,12 +404,13 @@ def test_a_touch_drag_and_a_double_tap_pin(open_page):
     assert not pg.state()['held'][k]
     pg.js('clothApp.advance(60)')
     before = pg.state()
-    x, y = pg.at(free_vertex(before, COLS, ROWS) - 3)
+    x, y = pg.at(6 * 12 + 3)
     finger.double_tap(x, y)
     after = pg.state()
     changed = [i for i, (a, b) in enumerate(zip(before['pinned'], after['pinned'])) if a != b]
     assert len(changed) == 1 and after['pinned'][changed[0]]
     assert after['positions'] == before['positions']       # a tap moves nothing
+    pg.js('clothApp.advance(10)')
     rec.assert_replays(pg)
 
 
