@@ -231,6 +231,18 @@ class Firefox(Engine):
     def send_file(self, selector, path):
         self.m.find_element('css selector', selector).send_keys(path)
 
+    def prompt(self):
+        """The text of an open window.prompt/alert, dismissed; None when there is none."""
+        from marionette_driver.errors import NoAlertPresentException
+        from marionette_driver.marionette import Alert
+        try:
+            alert = Alert(self.m)
+            text = alert.text
+            alert.dismiss()
+            return text
+        except NoAlertPresentException:
+            return None
+
     def device_scale(self, factor):
         if factor == 1:
             self.m.clear_pref('layout.css.devPixelsPerPx')
@@ -302,6 +314,16 @@ class WebKit(Engine):
 
     def send_file(self, selector, path):
         self.d.find_element('css selector', selector).send_keys(path)
+
+    def prompt(self):
+        from selenium.common.exceptions import NoAlertPresentException
+        try:
+            alert = self.d.switch_to.alert
+            text = alert.text
+            alert.dismiss()
+            return text
+        except NoAlertPresentException:
+            return None
 
     def log_text(self):
         return ''          # WebKitWebDriver has no log endpoint: errors are caught in the page

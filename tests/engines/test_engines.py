@@ -234,8 +234,16 @@ def test_a_mouse_drag_keeps_the_vertex_under_the_pointer(open_page):
     pg.wait_for_timeout(150)
     s = pg.state()
     assert s['held'][k] and near(s['screen'][k], (x + 30, y - 60)), s['screen'][k]
-    pg.mouse.up()
+    # pointer capture: off the canvas, over the panel, the pointer still drives the vertex,
+    # and letting go there releases it
     pg.js('clothApp.setPaused(true)')
+    box = canvas_size(pg)['box']
+    out = (round(box['right']) + 60, y - 60)
+    pg.mouse.move(*out, steps=4)
+    pg.js('clothApp.advance(2)')
+    s = pg.state()
+    assert s['held'][k] and near(s['screen'][k], out), (s['screen'][k], out)
+    pg.mouse.up()
     s = pg.state()
     assert not s['held'][k] and not s['pinned'][k]
     pg.js('clothApp.advance(30)')
@@ -459,6 +467,43 @@ def test_record_export_link_and_replay_give_the_same_positions(open_page):
     other.wait_for_function('clothApp.info().replay.ended', timeout=60)
     assert other.state()['positions'] == end
     assert other.js('clothApp.recording()') == text
+
+
+def test_link_copies_the_address_from_a_key_and_from_the_button(open_page, engine, request):
+    """README: "Link (L) copies an address with the recording in its fragment". share.copy
+    calls navigator.clipboard.writeText once the link is made, after CompressionStream's
+    promise: WebKit no longer counts that as the key press or click (NotAllowedError), so the
+    page falls back to window.prompt every time. Writing a ClipboardItem whose text is a Promise
+    of the link, in the handler itself, is allowed in all three engines (tried)."""
+    if engine.name == 'webkit':
+        request.node.add_marker(pytest.mark.xfail(strict=True, reason=(
+            'page defect (#16): in WebKit, Link (L, the Link button) never copies: writeText after '
+            'the CompressionStream promise is refused (NotAllowedError) and the page opens a prompt')))
+    outcomes = []
+    for press in ['key', 'button']:
+        pg = open_page('?paused=1')
+        pg.js('clothApp.advance(5)')
+        assert pg.info()['note'] == ''
+        if press == 'key':
+            pg.key('l')
+        else:
+            x, y = pg.locator('#btn-link').centre()
+            pg.engine.actions([{'type': 'pointer', 'id': 'mouse1', 'parameters': {'pointerType': 'mouse'},
+                                'actions': [{'type': 'pointerMove', 'x': x, 'y': y, 'origin': 'viewport', 'duration': 0},
+                                            {'type': 'pointerDown', 'button': 0}, {'type': 'pointerUp', 'button': 0}]}])
+        outcome = None
+        for _ in range(60):
+            pg.wait_for_timeout(50)
+            text = pg.engine.prompt()
+            if text is not None:
+                outcome = 'a prompt: ' + text
+                break
+            note = pg.info()['note']
+            if note.startswith('Link copied'):
+                outcome = 'copied'
+                break
+        outcomes.append((press, outcome))
+    assert outcomes == [('key', 'copied'), ('button', 'copied')], outcomes
 
 
 def test_a_broken_or_truncated_link_says_so_and_shows_the_default(open_page):
