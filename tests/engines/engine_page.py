@@ -42,8 +42,6 @@ class Page:
     def js(self, expr, arg=None):
         return self.engine.js(expr, arg)
 
-    evaluate = js
-
     def state(self):
         return self.js('clothApp.state()')
 
