@@ -1,0 +1,124 @@
+"""Fixtures for the page in Firefox ESR and WebKitGTK (issue #16): one Xvfb for the session,
+one browser per engine (every test runs once per engine, all of one engine's tests together,
+so only one browser is alive at a time), and a fresh load of dist/index.html (file://) per page.
+
+A machine without an engine skips that engine's tests with the reason; with CI=true a missing
+engine fails them. Teardown fails a test on any uncaught error, unhandled rejection,
+console.error or Content-Security-Policy violation in its pages (hooks in the page:
+engine_page.HOOKS), on a resource that is not a file:, data: or blob: URL, and, in Firefox, on a
+JavaScript error or console.error the browser logged for the page.
+"""
+import os
+import pathlib
+import sys
+import time
+
+import pytest
+
+HERE = pathlib.Path(__file__).absolute().parent
+sys.path.insert(0, str(HERE.parent / 'browser'))   # browser_helpers and the Chromium tests reused here
+
+from browser_helpers import DIST, ROOT  # noqa: E402,F401 (test_parity imports them from `conftest`)
+from engine_drivers import ENGINES, Xvfb, missing  # noqa: E402
+from engine_page import Page  # noqa: E402
+
+VIEWPORT = (1000, 700)          # as the Chromium tests' viewport
+ON_CI = os.environ.get('CI', '').strip().lower() in ('1', 'true', 'yes')
+
+# Firefox's log lines that are the page's errors (pref devtools.console.stdout.content).
+FIREFOX_ERRORS = ('JavaScript error: file://',)
+
+
+# For the summary at the end: per engine, its version, start-up and the time of its tests.
+SEEN = {}
+
+
+def pytest_runtest_logreport(report):
+    for name in ENGINES:
+        if report.nodeid.endswith('[%s]' % name) and HERE.name in report.nodeid:
+            seen = SEEN.setdefault(name, {'seconds': 0.0, 'tests': set(), 'version': '', 'start': 0.0})
+            seen['seconds'] += report.duration
+            seen['tests'].add(report.nodeid)
+
+
+def pytest_terminal_summary(terminalreporter):
+    for name, seen in sorted(SEEN.items()):
+        terminalreporter.write_line('engine %s %s: %d tests in %.1f s (start-up %.1f s)' % (
+            name, seen['version'] or '(not started)', len(seen['tests']), seen['seconds'], seen['start']))
+
+
+def pytest_collection_modifyitems(config, items):
+    for item in items:
+        if HERE in pathlib.Path(str(item.fspath)).parents:
+            item.add_marker(pytest.mark.engines)
+
+
+@pytest.fixture(scope='session')
+def xvfb():
+    """xvfb() -> the display of one Xvfb, started for the first engine that needs it."""
+    server = None
+
+    def display():
+        nonlocal server
+        if server is None:
+            server = Xvfb()
+        return server.display
+    yield display
+    if server is not None:
+        server.stop()
+
+
+@pytest.fixture(scope='session', params=sorted(ENGINES))
+def engine(request, xvfb, tmp_path_factory):
+    """One browser of each engine for the session."""
+    name = request.param
+    reason = missing(name)
+    if reason:
+        if ON_CI:
+            pytest.fail('CI=true and ' + reason, pytrace=False)
+        pytest.skip(reason)
+    home = tmp_path_factory.mktemp(name)
+    downloads = home / 'downloads'
+    downloads.mkdir()
+    t0 = time.time()
+    eng = ENGINES[name](xvfb(), downloads)
+    eng.downloads = downloads
+    eng.started_in = time.time() - t0
+    SEEN.setdefault(name, {'seconds': 0.0, 'tests': set(), 'version': '', 'start': 0.0}).update(
+        version=eng.version, start=eng.started_in)
+    yield eng
+    eng.quit()
+
+
+@pytest.fixture
+def open_page(engine):
+    """open_page(query='', expect_errors=False, url=None, size=VIEWPORT) -> Page: dist/index.html
+    + query (or a fragment), or url, in a fresh document; the viewport `size` (CSS pixels)."""
+    engine.current = None
+    engine.harvested = ()
+    log_start = len(engine.log_text())
+    expected = []
+
+    def _open(query='', expect_errors=False, url=None, size=VIEWPORT):
+        assert DIST.exists(), 'dist/index.html is missing: run `python build.py`'
+        if engine.size != size:
+            engine.window_size(*size)
+            engine.size = size
+        pg = Page(engine, expect_errors)
+        expected.append(expect_errors)
+        pg.goto(url or DIST.as_uri() + query)
+        return pg
+
+    yield _open
+    try:
+        engine.release()
+    except Exception:
+        pass
+    try:
+        errors = engine.take_errors()
+        assert errors == [], '%s: the page had errors or made requests: %r' % (engine.name, errors)
+        logged = [line for line in engine.log_text()[log_start:].splitlines() if line.startswith(FIREFOX_ERRORS)]
+        assert logged == [] or any(expected), '%s logged errors for the page: %r' % (engine.name, logged)
+    finally:
+        if engine.stuck:
+            engine.restart()

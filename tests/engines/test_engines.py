@@ -1,0 +1,549 @@
+"""Issue #16: the page in Firefox ESR and WebKitGTK (Safari's engine) as it is in Chromium.
+
+Every test runs once per engine (the `engine` fixture, conftest.py). Where a Chromium test of
+tests/browser/ needs nothing but the seam, a mouse and element text, it runs here unchanged
+(engine_page.Page is that much of Playwright's Page); the rest is written for WebDriver:
+integer pointer coordinates (so "under the pointer" means within 1 px), the page paused
+while a press lands, one tab per engine.
+
+What the drivers cannot synthesise is dispatched in the page as Pointer Events, and each test
+says so: a pen in both (Firefox: "Unimplemented pointerMove for pointerType pen"; WebKit: a
+pen's press arrives, its later moves and release do not), touch in WebKit (its driver sends
+pointerType "touch" actions as mouse events). Dispatched events are untrusted, so the page's
+setPointerCapture throws and is skipped (input.js); everything after the event is the same code.
+"""
+import json
+import struct
+import sys
+import zlib
+
+import pytest
+
+from browser_helpers import DIST, ROOT, free_vertex
+import test_page
+import test_recording_page as rec
+import test_render
+from test_parity import SCENES, grid
+
+sys.path.insert(0, str(ROOT))
+from cloth import api  # noqa: E402
+from cloth.scene import SceneError  # noqa: E402
+sys.path.pop(0)
+
+COLS, ROWS = 40, 30      # the default preset (curtain)
+PX = 1.0                 # integer pointer coordinates: a held vertex is within 1 px of the pointer
+
+
+def near(a, b, tol=PX):
+    return abs(a[0] - b[0]) <= tol and abs(a[1] - b[1]) <= tol
+
+
+def canvas_size(pg):
+    return pg.js('''() => { const c = document.getElementById('view'); const r = c.getBoundingClientRect();
+                          return {width: c.width, height: c.height, css: [r.width, r.height], dpr: devicePixelRatio,
+                                  box: r.toJSON()}; }''')
+
+
+def assert_sharp(pg):
+    c = canvas_size(pg)
+    assert c['width'] == round(c['css'][0] * c['dpr']) and c['height'] == round(c['css'][1] * c['dpr']), c
+    return c
+
+
+def wait_sharp(pg):
+    """The drawing buffer follows the canvas's size at the next rendering update (the resize
+    event and the ResizeObserver), not at once: wait for that, then assert_sharp."""
+    pg.wait_for_function('''() => { const c = document.getElementById('view'); const r = c.getBoundingClientRect();
+        return c.width === Math.round(r.width * devicePixelRatio) && c.height === Math.round(r.height * devicePixelRatio); }''',
+                         timeout=5)
+
+
+# ---- opens from file://, no error, no request -------------------------------------------------
+
+def test_opens_from_file_with_no_error_and_no_request(open_page, tmp_path):
+    """The shipped page, and a copy with the error hooks inlined before its own scripts (so an
+    error or a blocked request while it loads is caught too; WebKit's driver has no log)."""
+    from engine_page import HOOKS
+    html = DIST.read_text(encoding='utf-8')
+    csp = html.index('<meta http-equiv="Content-Security-Policy"')
+    after = html.index('>', csp) + 1
+    copy = tmp_path / 'index.html'
+    copy.write_text(html[:after] + '<script>' + HOOKS + '</script>' + html[after:], encoding='utf-8')
+    for pg in [open_page(url=copy.as_uri()), open_page(), open_page('?webgl=1&preset=chain')]:
+        pg.wait_for_function('clothApp.info().frames > 5')
+        info = pg.info()
+        assert info['webgl'] in (1, 2) and not info['lost'] and info['drawCalls'] == 2, info
+        assert info['error'] == '' and info['note'] == '' and pg.locator('#fatal').is_hidden()
+        assert pg.errors() == [] and pg.requests() == []
+    assert info['webgl'] == 1 and info['preset'] == 'chain'
+    st = open_page().state()
+    assert len(st['positions']) == COLS * ROWS == len(st['screen'])
+
+
+def test_the_harness_sees_what_goes_wrong_in_the_page(open_page, engine):
+    """The checks every test's teardown makes are not blind: a console.error, an uncaught
+    error, an unhandled rejection and a request (which the page's CSP blocks) all show."""
+    pg = open_page('?paused=1', expect_errors=True)
+    pg.js('''() => {
+        console.error('one console error');
+        setTimeout(() => { throw new Error('one uncaught error'); }, 0);
+        Promise.reject(new Error('one rejection'));
+        new Image().src = 'https://example.invalid/pixel.png';
+    }''')
+    errors = pg.wait_for_function('window.__engineErrors.length >= 4 && window.__engineErrors')
+    assert any(e.startswith('console.error: one console error') for e in errors), errors
+    # WebKit mutes the message of every uncaught error of a file:// page, the page's own
+    # scripts' too (tried: "Script error. (:0)"); the hook still sees that one happened.
+    assert any(e.startswith('error: ') and ('one uncaught error' in e or engine.name == 'webkit') for e in errors), errors
+    assert any(e.startswith('unhandledrejection: ') and 'one rejection' in e for e in errors), errors
+    assert any(e.startswith('csp: img-src') and 'example.invalid' in e for e in errors), errors
+    if engine.name == 'firefox':
+        pg.wait_for_timeout(200)
+        assert 'JavaScript error: file://' in engine.log_text() and 'one uncaught error' in engine.log_text()
+
+
+# ---- clothCore.run: the CLI's text, character for character ----------------------------------
+
+BAD = test_page.MALFORMED + ['{"cols": 2, "rows": 2, "spacing": 1, "a\\nb": 1}',
+                             '{"cols": 2, "rows": 2, "spacing": 1, "\\ud800\\ud83d\\ude00": 1}']
+
+
+def test_core_run_is_the_cli_character_for_character(open_page):
+    cases = [(json.dumps(scene), frames) for _, (scene, frames) in sorted(SCENES.items())]
+    cases.append((json.dumps(grid(40, 30, pins=[0, 13, 26, 39])), 20))
+    cases += [(text, 1) for text in BAD]
+    expected = []
+    for text, frames in cases:
+        try:
+            expected.append({'ok': api.run(text, frames)})
+        except SceneError as e:
+            expected.append({'error': str(e)})
+    pg = open_page('?paused=1')
+    got = pg.js('''(cases) => cases.map(([t, f]) => {
+        try { return {ok: clothCore.run(t, f)}; }
+        catch (e) { return {error: e instanceof Error ? e.message : 'not an Error: ' + String(e)}; } })''', cases)
+    names = sorted(SCENES) + ['grid-40x30'] + BAD
+    for name, want, have in zip(names, expected, got):
+        assert have == want, name
+    assert sum('ok' in e for e in expected) == len(SCENES) + 1
+
+
+def test_bad_scenes_give_the_cli_message_in_the_page(open_page):
+    test_page.test_bad_scenes_give_the_cli_message_in_the_page(open_page)
+
+
+# ---- drawing: both colour modes, pixels from the engine's own WebGL ----------------------------
+
+def test_strain_mode_brightness_grows_with_strain(open_page):
+    test_render.test_strain_mode_brightness_grows_with_strain(open_page)
+
+
+def test_stress_mode_goes_from_blue_to_red(open_page):
+    test_render.test_stress_mode_goes_from_blue_to_red(open_page)
+
+
+def test_default_scene_draws_both_modes(open_page):
+    test_render.test_default_scene_draws_both_modes(open_page)
+
+
+def test_webgl1_path_and_no_webgl_message(open_page):
+    test_render.test_webgl1_path(open_page)
+    test_render.test_no_webgl_shows_a_clear_message(open_page)
+
+
+def test_context_loss_and_restore(open_page):
+    test_render.test_context_loss_and_restore(open_page)
+
+
+def png_rgb(data):
+    """(width, height, rows of RGB(A) bytes) of an 8-bit, non-interlaced PNG: enough for a
+    screenshot, with no imaging library."""
+    assert data[:8] == b'\x89PNG\r\n\x1a\n'
+    pos, idat = 8, b''
+    while pos < len(data):
+        length, kind = struct.unpack('>I4s', data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b'IHDR':
+            width, height, depth, colour, _, _, interlace = struct.unpack('>IIBBBBB', body)
+            assert depth == 8 and colour in (2, 6) and interlace == 0, (depth, colour, interlace)
+        elif kind == b'IDAT':
+            idat += body
+        pos += 12 + length
+    bpp = 3 if colour == 2 else 4
+    raw, stride = zlib.decompress(idat), width * bpp
+    rows, prev = [], bytearray(stride)
+    for r in range(height):
+        f, line = raw[r * (stride + 1)], bytearray(raw[r * (stride + 1) + 1:(r + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            if f == 1:
+                line[i] = (line[i] + a) & 255
+            elif f == 2:
+                line[i] = (line[i] + b) & 255
+            elif f == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        prev = line
+    return width, height, bpp, rows
+
+
+def test_a_screenshot_shows_what_the_page_drew(open_page):
+    """The composited window, not only readPixels: the canvas reaches the screen."""
+    pg = open_page('?paused=1')
+    pg.js('clothApp.advance(60)')
+    pg.js("clothApp.setColorMode('stress')")
+    st = pg.state()
+    pts = [[round(x), round(y)] for i, (x, y) in enumerate(st['screen']) if i % 7 == 0]
+    drawn = pg.js('(p) => clothApp.pixels(p)', pts)
+    lit = [i for i, c in enumerate(drawn) if c[0] + c[2] > 120]
+    assert len(lit) > len(pts) // 2
+    for _ in range(10):       # the window shows a draw a frame or two after it was made
+        pg.js('new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(() => done())))')
+        width, height, bpp, rows = png_rgb(pg.engine.screenshot())
+        assert (width, height) == (1000, 700)
+        shot = [tuple(rows[y][x * bpp:x * bpp + 3]) for x, y in pts]
+        same = sum(1 for i in lit if max(abs(a - b) for a, b in zip(shot[i], drawn[i][:3])) <= 8)
+        if same >= 0.9 * len(lit):
+            break
+    assert same >= 0.9 * len(lit), (same, len(lit), [(shot[i], drawn[i]) for i in lit[:5]])
+
+
+# ---- input: a real mouse ---------------------------------------------------------------------
+
+def test_a_mouse_drag_keeps_the_vertex_under_the_pointer(open_page):
+    pg = open_page('?paused=1')
+    pg.js('clothApp.advance(240)')
+    st = pg.state()
+    k = free_vertex(st, COLS, ROWS)
+    x, y = pg.at(k)
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    held = [i for i, h in enumerate(pg.state()['held']) if h]
+    d2 = [(sx - x) ** 2 + (sy - y) ** 2 for sx, sy in st['screen']]
+    assert len(held) == 1 and d2[held[0]] == min(d2), (held, k)
+    k = held[0]
+    assert pg.state()['positions'] == st['positions']          # a press moves nothing
+    for px, py in [(x + 80, y + 40), (x - 150, y + 60), (x - 20, y - 200)]:
+        pg.mouse.move(px, py, steps=4)
+        pg.js('clothApp.advance(3)')                             # paused: frames run now
+        s = pg.state()
+        assert s['held'][k] and near(s['screen'][k], (px, py)), (s['screen'][k], (px, py))
+    pg.js('clothApp.setPaused(false)')                           # and with the loop running
+    pg.mouse.move(x + 30, y - 60, steps=4)
+    pg.wait_for_timeout(150)
+    s = pg.state()
+    assert s['held'][k] and near(s['screen'][k], (x + 30, y - 60)), s['screen'][k]
+    # pointer capture: off the canvas, over the panel, the pointer still drives the vertex,
+    # and letting go there releases it
+    pg.js('clothApp.setPaused(true)')
+    box = canvas_size(pg)['box']
+    out = (round(box['right']) + 60, y - 60)
+    pg.mouse.move(*out, steps=4)
+    pg.js('clothApp.advance(2)')
+    s = pg.state()
+    assert s['held'][k] and near(s['screen'][k], out), (s['screen'][k], out)
+    pg.mouse.up()
+    s = pg.state()
+    assert not s['held'][k] and not s['pinned'][k]
+    pg.js('clothApp.advance(30)')
+    assert pg.state()['positions'][k] != s['positions'][k]      # free again: it falls
+
+
+def test_right_click_pins_and_unpins(open_page, engine):
+    """A free vertex right-clicked is pinned and holds still; a pinned one right-clicked is
+    free and falls. In WebKit each right-click needs a session of its own (WebKit.pressed)."""
+    pg = open_page('?paused=1')
+    pg.js('clothApp.advance(240)')
+    st = pg.state()
+    k = 15 * COLS + 18
+    pg.mouse.click(*pg.at(k), button='right')
+    after = pg.state()
+    changed = [i for i, (p, q) in enumerate(zip(st['pinned'], after['pinned'])) if p != q]
+    assert changed == [k] and after['pinned'][k]
+    assert after['positions'] == st['positions']            # a pin toggle moves nothing
+    pg.js('clothApp.setPaused(false)')
+    pg.wait_for_timeout(300)                                # the loop runs
+    pg.js('clothApp.advance(120)')
+    assert pg.state()['positions'][k] == after['positions'][k]
+
+    engine.restart()
+    pg = open_page('?paused=1')
+    pg.js('clothApp.advance(240)')
+    st = pg.state()
+    assert st['pinned'][0]                                  # the curtain's corner
+    pg.mouse.click(*pg.at(0), button='right')
+    after = pg.state()
+    assert not after['pinned'][0] and sum(after['pinned']) == sum(st['pinned']) - 1
+    pg.js('clothApp.advance(30)')
+    assert pg.state()['positions'][0] != st['positions'][0]     # free: it falls
+
+
+def test_a_resize_keeps_the_canvas_sharp_and_the_held_vertex_under_the_pointer(open_page):
+    pg = open_page('?paused=1')
+    pg.js('clothApp.advance(60)')
+    assert_sharp(pg)
+    for size in [(1300, 800), (640, 480), (1000, 700)]:
+        # nothing held: the canvas follows the window, sharp, and the cloth is refitted into it
+        pg.window_size(*size)
+        wait_sharp(pg)
+        pg.js('clothApp.advance(1)')
+        box = assert_sharp(pg)['box']
+        for sx, sy in pg.state()['screen']:
+            assert box['left'] <= sx <= box['right'] and box['top'] <= sy <= box['bottom'], (size, sx, sy)
+    for size in [(800, 600), (1000, 700)]:
+        # held through a resize: the vertex stays under the pointer
+        k = free_vertex(pg.state(), COLS, ROWS)
+        x, y = pg.at(k)
+        pg.mouse.move(x, y)
+        pg.mouse.down()
+        k = pg.state()['held'].index(True)
+        px, py = x + 20, y - 30
+        pg.mouse.move(px, py)
+        pg.window_size(*size)
+        wait_sharp(pg)
+        pg.js('clothApp.advance(3)')
+        box = assert_sharp(pg)['box']
+        assert box['left'] <= px <= box['right'] and box['top'] <= py <= box['bottom']
+        assert near(pg.state()['screen'][k], (px, py)), (size, pg.state()['screen'][k], (px, py))
+        pg.mouse.up()
+        pg.js('clothApp.advance(60)')
+
+
+def test_device_pixel_ratio_2_is_sharp_and_a_drag_exact(open_page, engine):
+    """devicePixelRatio 2: Firefox's layout.css.devPixelsPerPx, WebKitGTK's GDK_SCALE (a new
+    MiniBrowser)."""
+    engine.device_scale(2)
+    try:
+        pg = open_page('?paused=1', size=(600, 450))
+        assert pg.js('devicePixelRatio') == 2
+        wait_sharp(pg)
+        c = assert_sharp(pg)
+        assert c['width'] >= 2 * int(c['css'][0])
+        pg.js('clothApp.advance(240)')
+        k = free_vertex(pg.state(), COLS, ROWS)
+        x, y = pg.at(k)
+        pg.mouse.move(x, y)
+        pg.mouse.down()
+        k = pg.state()['held'].index(True)
+        for px, py in [(x + 33, y - 41), (x - 60, y + 20)]:
+            pg.mouse.move(px, py)
+            pg.js('clothApp.advance(2)')
+            assert near(pg.state()['screen'][k], (px, py)), (pg.state()['screen'][k], (px, py))
+        pg.mouse.up()
+        px = pg.js('(p) => clothApp.pixels(p)', [[round(a), round(b)] for a, b in pg.state()['screen'][::9]])
+        assert sum(1 for c in px if c[0] > 60) > len(px) // 2       # drawn at this scale too
+    finally:
+        engine.device_scale(1)
+
+
+# ---- input: touch and pen ------------------------------------------------------------------
+
+DISPATCH = '''([type, kind, id, x, y]) => {
+    const down = type === 'pointerdown', up = type === 'pointerup';
+    document.getElementById('view').dispatchEvent(new PointerEvent(type, {
+        pointerId: id, pointerType: kind, isPrimary: true, button: type === 'pointermove' ? -1 : 0,
+        buttons: up ? 0 : 1, clientX: x, clientY: y, bubbles: true, cancelable: true,
+        pressure: up ? 0 : 0.5, width: 10, height: 10}));
+}'''
+
+
+class Finger:
+    """A finger: WebDriver touch actions where the driver has them (Firefox), else Pointer
+    Events dispatched in the page (WebKitGTK's driver sends touch actions as mouse events)."""
+
+    def __init__(self, pg):
+        self.pg, self.real = pg, pg.name == 'firefox'
+
+    def _act(self, actions):
+        self.pg.engine.actions([{'type': 'pointer', 'id': 'finger1', 'parameters': {'pointerType': 'touch'},
+                                 'actions': actions}])
+
+    def down(self, x, y):
+        if self.real:
+            self._act([{'type': 'pointerMove', 'x': x, 'y': y, 'origin': 'viewport', 'duration': 0},
+                       {'type': 'pointerDown', 'button': 0}])
+        else:
+            self.pg.js(DISPATCH, ['pointerdown', 'touch', 21, x, y])
+        self.x, self.y = x, y
+
+    def move(self, x, y):
+        if self.real:
+            self._act([{'type': 'pointerMove', 'x': x, 'y': y, 'origin': 'viewport', 'duration': 0}])
+        else:
+            self.pg.js(DISPATCH, ['pointermove', 'touch', 21, x, y])
+        self.x, self.y = x, y
+
+    def up(self):
+        if self.real:
+            self._act([{'type': 'pointerUp', 'button': 0}])
+        else:
+            self.pg.js(DISPATCH, ['pointerup', 'touch', 21, self.x, self.y])
+
+    def double_tap(self, x, y):
+        if self.real:       # one action chain: the two taps land well within 350 ms
+            tap = [{'type': 'pointerDown', 'button': 0}, {'type': 'pointerUp', 'button': 0}]
+            self._act([{'type': 'pointerMove', 'x': x, 'y': y, 'origin': 'viewport', 'duration': 0}] + tap + tap)
+        else:
+            for _ in range(2):
+                self.down(x, y)
+                self.up()
+
+
+def test_a_touch_drag_and_a_double_tap_pin(open_page):
+    """Touch actions in Firefox, Pointer Events dispatched in the page in WebKit (Finger);
+    the recording of both replays in the CLI bit for bit."""
+    pg = open_page()
+    rec.load_small(pg)                       # 12x9: the CLI replays it in a moment
+    pg.js('clothApp.advance(120)')
+    finger = Finger(pg)
+    x, y = pg.at(8 * 12 + 6)
+    before = pg.state()
+    finger.down(x, y)
+    held = [i for i, h in enumerate(pg.state()['held']) if h]
+    assert len(held) == 1 and pg.state()['positions'] == before['positions']
+    k = held[0]
+    for i in range(1, 9):
+        finger.move(x + 12 * i, y - 9 * i)
+        pg.js('clothApp.advance(1)')
+        s = pg.state()
+        assert s['held'][k] and near(s['screen'][k], (x + 12 * i, y - 9 * i)), (s['screen'][k], i)
+    finger.up()
+    assert not pg.state()['held'][k]
+    pg.js('clothApp.advance(60)')
+    before = pg.state()
+    x, y = pg.at(6 * 12 + 3)
+    finger.double_tap(x, y)
+    after = pg.state()
+    changed = [i for i, (a, b) in enumerate(zip(before['pinned'], after['pinned'])) if a != b]
+    assert len(changed) == 1 and after['pinned'][changed[0]]
+    assert after['positions'] == before['positions']       # a tap moves nothing
+    pg.js('clothApp.advance(10)')
+    rec.assert_replays(pg)
+
+
+def test_a_pen_drag_replays_exactly(open_page):
+    """The pen's events are dispatched in the page in both engines (see the module's doc)."""
+    rec.test_a_pen_drag_replays_exactly(open_page)
+
+
+# ---- record, export, link, replay -------------------------------------------------------------
+
+def test_record_export_link_and_replay_give_the_same_positions(open_page):
+    """A real mouse drag and a right-click pin, recorded; the CLI runs the recording to the
+    page's positions bit for bit; the Export button's download is the recording; the link,
+    opened in a fresh page of the same engine, replays to the same doubles; so does Replay."""
+    pg = open_page()
+    end, text = rec.make_recording(pg)
+    x, y = pg.at(5 * 12 + 4)
+    pg.mouse.click(x, y, button='right')
+    pg.js('clothApp.advance(20)')
+    end, text = pg.state()['positions'], pg.js('clothApp.recording()')
+    recording = rec.assert_replays(pg)
+    ops = [a['op'] for a in recording['actions']]
+    assert ops.count('grab') == 1 and ops.count('release') == 1 and ops.count('pin') == 1 and 'move' in ops
+
+    assert pg.js('clothApp.recording()') == text               # the seam
+    pg.key('e')          # Export, a real key (in WebKit no press may follow the right-click)
+    saved = pg.wait_for_function('''() => /^Recording saved as cloth-custom-\\d+f\\.json/.test(clothApp.info().note)
+                                         && clothApp.info().note''')
+    name = saved.split('saved as ')[1].split(' ')[0]
+    path = pg.engine.downloads / name
+    for _ in range(100):
+        if path.exists() and path.stat().st_size == len(text.encode()):
+            break
+        pg.wait_for_timeout(50)
+    assert path.read_text(encoding='utf-8') == text, 'the %s download' % pg.name
+
+    url = pg.js('clothApp.link()')
+    assert url.startswith(DIST.as_uri() + '#scene=')            # deflate-raw: CompressionStream
+    other = open_page(url=url)
+    other.wait_for_function('clothApp.info().replay.ended', timeout=60)
+    assert other.info()['paused'] and other.info()['frames'] == recording['frames']
+    assert other.state()['positions'] == end
+    assert other.js('clothApp.recording()') == text
+
+    other.js('clothApp.replay()')
+    other.wait_for_function('clothApp.info().replay.ended', timeout=60)
+    assert other.state()['positions'] == end
+    assert other.js('clothApp.recording()') == text
+
+
+def test_link_copies_the_address_from_a_key_and_from_the_button(open_page, engine, request):
+    """README: "Link (L) copies an address with the recording in its fragment". share.copy
+    calls navigator.clipboard.writeText once the link is made, after CompressionStream's
+    promise: WebKit no longer counts that as the key press or click (NotAllowedError), so the
+    page falls back to window.prompt every time. Writing a ClipboardItem whose text is a Promise
+    of the link, in the handler itself, is allowed in all three engines (tried)."""
+    if engine.name == 'webkit':
+        request.node.add_marker(pytest.mark.xfail(strict=True, reason=(
+            'page defect (#16): in WebKit, Link (L, the Link button) never copies: writeText after '
+            'the CompressionStream promise is refused (NotAllowedError) and the page opens a prompt')))
+    outcomes = []
+    for press in ['key', 'button']:
+        pg = open_page('?paused=1')
+        pg.js('clothApp.advance(5)')
+        assert pg.info()['note'] == ''
+        if press == 'key':
+            pg.key('l')
+        else:
+            x, y = pg.locator('#btn-link').centre()
+            pg.engine.actions([{'type': 'pointer', 'id': 'mouse1', 'parameters': {'pointerType': 'mouse'},
+                                'actions': [{'type': 'pointerMove', 'x': x, 'y': y, 'origin': 'viewport', 'duration': 0},
+                                            {'type': 'pointerDown', 'button': 0}, {'type': 'pointerUp', 'button': 0}]}])
+        outcome = None
+        for _ in range(60):
+            pg.wait_for_timeout(50)
+            text = pg.engine.prompt()
+            if text is not None:
+                outcome = 'a prompt: ' + text
+                break
+            note = pg.info()['note']
+            if note.startswith('Link copied'):
+                outcome = 'copied'
+                break
+        outcomes.append((press, outcome))
+    assert outcomes == [('key', 'copied'), ('button', 'copied')], outcomes
+
+
+def test_a_broken_or_truncated_link_says_so_and_shows_the_default(open_page):
+    """A link cut short where base64url still decodes reaches the engine's DecompressionStream,
+    which must reject it; the others are refused before it."""
+    pg = open_page()
+    rec.make_recording(pg)
+    url = pg.js('clothApp.link()')
+    data = url.split('#scene=')[1]
+    cut = len(data) // 2
+    while cut % 4 == 1:
+        cut += 1
+    for bad, words in [(url.split('#')[0] + '#scene=' + data[:cut], 'does not decompress'),
+                       (url.split('#')[0] + '#scene=' + data[:4 * (len(data) // 8) + 1], 'cut short'),
+                       (DIST.as_uri() + '#scene=@@@', 'base64url'),
+                       (DIST.as_uri() + '#scene-json=' + 'e30', 'cols: missing')]:
+        other = open_page(url=bad)
+        other.wait_for_function('!clothApp.info().linkPending')
+        info = other.info()
+        assert words in info['error'] and 'link could not be opened' in info['error'], (words, info['error'])
+        assert info['preset'] == 'curtain'
+
+
+def test_open_a_file_by_the_picker_and_by_a_drop(open_page, tmp_path):
+    """The picker through WebDriver's file input; the drop as a DragEvent dispatched in the page
+    (neither driver drags files from outside the browser)."""
+    rec.test_open_a_file_by_the_picker_and_by_a_drop(open_page, tmp_path)
+
+
+# ---- not in the page yet ---------------------------------------------------------------------
+
+@pytest.mark.skip(reason='issue #14: compare mode is not in the page yet; its engine test goes here')
+def test_compare_mode(open_page):
+    pass
+
+
+@pytest.mark.skip(reason='issue #15: the blade is not in the page yet; its engine test goes here')
+def test_the_blade_cuts(open_page):
+    pass
