@@ -15,7 +15,8 @@ from cloth.host import f64, i32
 from cloth.scene import SceneError
 from cloth.solve import integrate, sweep_jakobsen, sweep_xpbd, project_tethers, project_cells, \
     solve_lines, relieve, relieve_cells, clear, max_motion2, copy_into, mark_crossed, \
-    mark_overstretched
+    mark_overstretched, N_CONSTS, K_SPACING, K_TOLERANCE, K_ALPHA, K_STRETCH, K_KEEP, K_AX, \
+    K_AY, K_MAX_STEP, K_TEAR2
 from cloth.measure import deformation, nearest_vertex
 from cloth.tethers import find_anchors, list_fixed, over_reach, label_pieces
 
@@ -72,6 +73,8 @@ class Cloth:
         self.spacing = h
         self.n_verts = n
 
+        # A step's constants as doubles in a typed array, for the kernels (solve.K_*).
+        self.consts = f64(N_CONSTS)
         # Zero-sized until configure() sizes what the scene's settings use.
         self.line_nx = f64(0)
         self.line_ny = f64(0)
@@ -109,6 +112,9 @@ class Cloth:
         self.cell_ok = i32(0)
         self.piece = i32(0)
         self.stack = i32(0)
+        # Where kernels put a double they measure (a returned double would be a heap number in
+        # JS: an allocation per call in the hot path).
+        self.out = f64(1)
         self.tear_q = f64(TEAR_PER_FRAME)
         self.tear_e = i32(TEAR_PER_FRAME)
         # Set when a vertex is let go: the next step starts with `relieve`.
@@ -259,16 +265,17 @@ def frame(cloth):
             cloth.anchors_stale = False
         cloth.stretch = 1.0
         if cloth.n_held > 0:
-            cloth.stretch = min(MAX_STRETCH, over_reach(cloth.pos, cloth.held, cloth.fixed,
-                                                        cloth.n_fixed, cloth.cols, cloth.spacing,
-                                                        cloth.intact, cloth.piece))
+            over_reach(cloth.pos, cloth.held, cloth.fixed, cloth.n_fixed, cloth.cols,
+                       cloth.consts, cloth.intact, cloth.piece, cloth.out)
+            cloth.stretch = min(MAX_STRETCH, cloth.out[0])
+        cloth.consts[K_STRETCH] = cloth.stretch
     for s in range(cloth.substeps):
         step(cloth)
     # Tearing: a cloth whose last step converged has every edge within the tolerance, below
     # any tear limit at least as large, and costs nothing to check.
     if cloth.tear > 0.0 and not (cloth.converged and cloth.tolerance <= cloth.tear):
         if mark_overstretched(cloth.pos, cloth.edge_a, cloth.edge_b, cloth.rest, cloth.n_edges,
-                              cloth.tear_limit2, TEAR_PER_FRAME, cloth.tear_q, cloth.tear_e) > 0:
+                              cloth.consts, TEAR_PER_FRAME, cloth.tear_q, cloth.tear_e) > 0:
             break_marked(cloth)
     if cloth.use_sleep:
         settle(cloth)
@@ -277,7 +284,8 @@ def frame(cloth):
 def settle(cloth):
     """Count still frames; after a window of them, sleep if nothing drifted (see SLEEP_TIME)."""
     n = cloth.n_verts
-    moved2 = max_motion2(cloth.pos, cloth.last_pos, cloth.inv_mass, n)
+    max_motion2(cloth.pos, cloth.last_pos, cloth.inv_mass, n, cloth.out)
+    moved2 = cloth.out[0]
     copy_into(cloth.last_pos, cloth.pos, n + n)
     if moved2 > cloth.still_motion2:
         cloth.still_frames = 0
@@ -286,7 +294,8 @@ def settle(cloth):
         copy_into(cloth.still_from, cloth.pos, n + n)
     cloth.still_frames += 1
     if cloth.still_frames > cloth.sleep_frames:
-        if max_motion2(cloth.pos, cloth.still_from, cloth.inv_mass, n) <= cloth.drift2:
+        max_motion2(cloth.pos, cloth.still_from, cloth.inv_mass, n, cloth.out)
+        if cloth.out[0] <= cloth.drift2:
             cloth.asleep = True
         else:
             cloth.still_frames = 0
@@ -311,8 +320,7 @@ def step(cloth):
             if moved == 0:
                 break
     cloth.relieve_pending = False
-    cloth.clamped += integrate(pos, cloth.prev, inv_mass, n, cloth.keep, cloth.ax, cloth.ay,
-                               cloth.max_step)
+    cloth.clamped += integrate(pos, cloth.prev, inv_mass, n, cloth.consts)
     if cloth.use_xpbd:
         clear(cloth.lam, m)
     if cloth.iterations == 0:
@@ -321,7 +329,7 @@ def step(cloth):
     # and what hangs from them, and the cells are kept parallelograms (no folded cells). The
     # sweeps that follow then measure, and fix, only what is left.
     if cloth.use_tethers:
-        project_tethers(pos, cloth.prev, inv_mass, cloth.anchor, cloth.tether, n, cloth.stretch)
+        project_tethers(pos, cloth.prev, inv_mass, cloth.anchor, cloth.tether, n, cloth.consts)
         cloth.projections += n
     # Cells only while the cloth moves: one that converged last step is near its rest shape,
     # and a cloth at rest spends its step on one sweep (curtain 120x120: 25% fewer projections).
@@ -332,11 +340,12 @@ def step(cloth):
     track = cloth.tolerance > 0.0
     for it in range(cloth.iterations):
         if cloth.use_xpbd:
-            worst = sweep_xpbd(pos, cloth.prev, inv_mass, cloth.edge_a, cloth.edge_b, cloth.rest,
-                               cloth.lam, m, cloth.alpha, track)
+            sweep_xpbd(pos, cloth.prev, inv_mass, cloth.edge_a, cloth.edge_b, cloth.rest,
+                       cloth.lam, m, cloth.consts, track, cloth.out)
         else:
-            worst = sweep_jakobsen(pos, inv_mass, cloth.edge_a, cloth.edge_b, cloth.rest,
-                                   m, track)
+            sweep_jakobsen(pos, inv_mass, cloth.edge_a, cloth.edge_b, cloth.rest, m, track,
+                           cloth.out)
+        worst = cloth.out[0]
         cloth.projections += m
         # The sweep measured the error it found before correcting: once that is within
         # tolerance the cloth is converged and further work would be wasted.
@@ -359,16 +368,15 @@ def lines(cloth):
     of the width from the exact hang this way, 1.0% with the rows first)."""
     cols = cloth.cols
     rows = cloth.rows
-    h = cloth.spacing
     if rows > 1:
-        solve_lines(cloth.pos, cloth.inv_mass, 0, cols, rows, h, cols, 1, cloth.tolerance,
-                    LINE_NEWTON, cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd,
-                    cloth.intact, cloth.down_ok)
+        solve_lines(cloth.pos, cloth.inv_mass, 0, cols, rows, cols, 1, LINE_NEWTON, cloth.line_nx,
+                    cloth.line_ny, cloth.line_cc, cloth.line_cd, cloth.intact, cloth.down_ok,
+                    cloth.consts)
         cloth.projections += cols * (rows - 1)
     if cols > 1:
-        solve_lines(cloth.pos, cloth.inv_mass, 0, 1, cols, h, rows, cols, cloth.tolerance,
-                    LINE_NEWTON, cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd,
-                    cloth.intact, cloth.right_ok)
+        solve_lines(cloth.pos, cloth.inv_mass, 0, 1, cols, rows, cols, LINE_NEWTON, cloth.line_nx,
+                    cloth.line_ny, cloth.line_cc, cloth.line_cd, cloth.intact, cloth.right_ok,
+                    cloth.consts)
         cloth.projections += rows * (cols - 1)
 
 
@@ -409,7 +417,16 @@ def configure(cloth, scene):
         cloth.line_cc = f64(longest)
         cloth.line_cd = f64(longest)
     cloth.tear = scene.tear
-    cloth.tear_limit2 = (1.0 + scene.tear) * (1.0 + scene.tear)
+    k = cloth.consts
+    k[K_SPACING] = cloth.spacing
+    k[K_TOLERANCE] = cloth.tolerance
+    k[K_ALPHA] = cloth.alpha
+    k[K_STRETCH] = 1.0
+    k[K_KEEP] = cloth.keep
+    k[K_AX] = cloth.ax
+    k[K_AY] = cloth.ay
+    k[K_MAX_STEP] = cloth.max_step
+    k[K_TEAR2] = (1.0 + scene.tear) * (1.0 + scene.tear)
     cloth.use_sleep = scene.sleep
     extent = max(longest - 1, 1) * cloth.spacing
     cloth.still_motion2 = SLEEP_MOTION * SLEEP_MOTION * extent * extent

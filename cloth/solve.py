@@ -11,13 +11,28 @@ pinned or held vertex; edge e joins `edge_a[e]` and `edge_b[e]` with rest length
 
 import math
 
+# A step's constants, in one Float64Array per cloth (Cloth.consts, filled by sim.configure):
+# a double passed as an argument to a kernel V8 does not inline is boxed into a fresh heap
+# number on every call (measured: about 50 bytes a frame through the line solves), where a
+# read from a typed array inside the kernel is not.
+K_SPACING = 0
+K_TOLERANCE = 1
+K_ALPHA = 2
+K_STRETCH = 3
+K_KEEP = 4
+K_AX = 5
+K_AY = 6
+K_MAX_STEP = 7
+K_TEAR2 = 8
+N_CONSTS = 9
+
 # Below this squared length an edge has no direction to push along (two fixed vertices
 # dragged onto one point): it is skipped rather than divided by zero, which would turn the
 # whole cloth into NaN within a frame.
 TINY2 = 1e-30
 
 
-def integrate(pos, prev, inv_mass, n, keep, ax, ay, max_step):
+def integrate(pos, prev, inv_mass, n, consts):
     """Position Verlet, x' = x + (x - x*) * keep + a h^2, for every free vertex; returns how
     many vertices had their speed clamped.
 
@@ -27,6 +42,10 @@ def integrate(pos, prev, inv_mass, n, keep, ax, ay, max_step):
     cloth can pump energy without bound (a 60x60 cloth on one pin reaches 1e9 m/s, then NaN).
     Speeds above max_speed are scaled down to it; below it the step is exactly the seed's."""
     sqrt = math.sqrt
+    keep = consts[K_KEEP]
+    ax = consts[K_AX]
+    ay = consts[K_AY]
+    max_step = consts[K_MAX_STEP]
     max_step2 = max_step * max_step
     clamped = 0
     for k in range(n):
@@ -50,9 +69,10 @@ def integrate(pos, prev, inv_mass, n, keep, ax, ay, max_step):
     return clamped
 
 
-def sweep_jakobsen(pos, inv_mass, edge_a, edge_b, rest, m, track):
-    """One Gauss-Seidel pass of the seed's projection; returns the largest |len - rest| / rest
-    seen (when `track`, else 0).
+def sweep_jakobsen(pos, inv_mass, edge_a, edge_b, rest, m, track, out):
+    """One Gauss-Seidel pass of the seed's projection; out[0] = the largest |len - rest| / rest
+    seen (when `track`, else 0). Doubles come back through `out`, not as the return value: a
+    returned double is a heap number in JS, an allocation per call in the hot path.
 
     Per edge: diff = (len - rest) / len, and each end moves along the edge by its share
     w_i / (w_a + w_b) of diff: 1/2 each for two free ends (the seed's formula exactly), the
@@ -89,12 +109,12 @@ def sweep_jakobsen(pos, inv_mass, edge_a, edge_b, rest, m, track):
         pos[ia + 1] += dy * sa
         pos[ib] -= dx * sb
         pos[ib + 1] -= dy * sb
-    return worst
+    out[0] = worst
 
 
-def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, alpha, track):
+def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, consts, track, out):
     """One Gauss-Seidel pass of XPBD (Macklin, Mueller, Chentanez 2016) with the constraint
-    gradient taken at the start of the step, as SHAKE does; returns the largest |C| / rest.
+    gradient taken at the start of the step, as SHAKE does; out[0] = the largest |C| / rest.
 
     C = (|d|^2 - rest^2) / (2 rest) (= len - rest to first order), d = x_b - x_a now, o the
     same edge at the start of the step (`prev`). Moving the ends along o rather than d is what
@@ -107,6 +127,7 @@ def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, alpha, track):
     turned by more than 25 degrees within the step, or is more than 10% off its rest length,
     the linearisation is poor, and the edge is projected along d onto its exact length."""
     sqrt = math.sqrt
+    alpha = consts[K_ALPHA]
     worst = 0.0
     for e in range(m):
         a = edge_a[e]
@@ -156,7 +177,7 @@ def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, alpha, track):
         pos[ia + 1] -= oy * sa
         pos[ib] += ox * sb
         pos[ib + 1] += oy * sb
-    return worst
+    out[0] = worst
 
 
 def project_cells(pos, inv_mass, cols, rows, strength, intact, cell_ok):
@@ -211,10 +232,11 @@ def project_cells(pos, inv_mass, cols, rows, strength, intact, cell_ok):
             pos[idd + 1] += wd * sy
 
 
-def solve_lines(pos, inv_mass, first, stride, nodes, rest, lines, line_step, tolerance, newton,
-                nx, ny, cc, cd, intact, link_ok):
+def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, nx, ny, cc, cd,
+                intact, link_ok, consts):
     """Solve every edge of a grid line at once: for each of `lines` lines (node i of line l is
-    first + l * line_step + i * stride, `nodes` nodes, every link `rest` long), the linearised
+    first + l * line_step + i * stride, `nodes` nodes, every link consts[K_SPACING] long), the
+    linearised
     constraints len_i - rest = 0 of the line's links form a tridiagonal system in the
     multipliers,
         (w_i + w_i+1) dl_i - w_i (n_i-1 . n_i) dl_i-1 - w_i+1 (n_i . n_i+1) dl_i+1 = len_i - rest,
@@ -236,6 +258,8 @@ def solve_lines(pos, inv_mass, first, stride, nodes, rest, lines, line_step, tol
     Newton step, because the column solves that come first pull a loaded top row far from its
     length (measured at 120x120: links 20-90% long), where one step leaves much of it."""
     sqrt = math.sqrt
+    rest = consts[K_SPACING]
+    tolerance = consts[K_TOLERANCE]
     links = nodes - 1
     tol = tolerance * rest
     # Newton converges quadratically: from a largest error e one step leaves about e^2 / rest,
@@ -343,10 +367,11 @@ def mark_crossed(pos, edge_a, edge_b, rest, m, px, py, qx, qy):
     return count
 
 
-def mark_overstretched(pos, edge_a, edge_b, rest, m, limit2, most, best_q, best_e):
+def mark_overstretched(pos, edge_a, edge_b, rest, m, consts, most, best_q, best_e):
     """Mark (rest = -1) the `most` edges strained most past the limit: (len / rest)^2 >
-    limit2 = (1 + tear)^2, no square root. Returns how many. best_q / best_e (`most` long)
+    limit2 = consts[K_TEAR2] = (1 + tear)^2, no square root. Returns how many. best_q / best_e (`most` long)
     keep the worst ones seen, most strained first (an insertion; `most` is small)."""
+    limit2 = consts[K_TEAR2]
     found = 0
     for e in range(m):
         ia = edge_a[e] + edge_a[e]
@@ -373,7 +398,7 @@ def mark_overstretched(pos, edge_a, edge_b, rest, m, limit2, most, best_q, best_
     return found
 
 
-def project_tethers(pos, prev, inv_mass, anchor, tether, n, stretch):
+def project_tethers(pos, prev, inv_mass, anchor, tether, n, consts):
     """Long-range attachments (Kim, Chentanez, Mueller 2012), one-sided: a free vertex may be no
     farther from its anchor (the nearest fixed vertex along the cloth) than the length of the
     shortest path between them over the edges (tethers.find_anchors). One projection per
@@ -382,9 +407,10 @@ def project_tethers(pos, prev, inv_mass, anchor, tether, n, stretch):
     anchor-to-vertex direction at the start of the step (one Newton step on |d|^2 = limit^2, no
     sqrt), so that a tether that is also an edge (a pendulum) keeps its energy; far from the
     limit or after a sharp turn it is projected along d onto the exact distance instead.
-    `stretch` (>= 1) scales every limit while a hand pulls the cloth beyond its reach
+    consts[K_STRETCH] (>= 1) scales every limit while a hand pulls the cloth beyond its reach
     (tethers.over_reach)."""
     sqrt = math.sqrt
+    stretch = consts[K_STRETCH]
     for k in range(n):
         c = anchor[k]
         if c < 0 or inv_mass[k] == 0.0:
@@ -535,8 +561,9 @@ def shift_cell(xy, ia, ib, ie, idd, wa, wb, we, wd, sx, sy):
     xy[idd + 1] += wd * sy
 
 
-def max_motion2(pos, prev, inv_mass, n):
-    """The largest squared distance between a free vertex's positions in `pos` and `prev`."""
+def max_motion2(pos, prev, inv_mass, n, out):
+    """out[0] = the largest squared distance between a free vertex's positions in `pos` and
+    `prev`."""
     worst = 0.0
     for k in range(n):
         if inv_mass[k] == 0.0:
@@ -547,7 +574,7 @@ def max_motion2(pos, prev, inv_mass, n):
         d2 = dx * dx + dy * dy
         if d2 > worst:
             worst = d2
-    return worst
+    out[0] = worst
 
 
 def copy_into(dst, src, m):

@@ -17,6 +17,7 @@ Run only when the set of fixed vertices changes (pin, unpin, grab, release), not
 import math
 
 from cloth.host import f64, i32
+from cloth.solve import K_SPACING
 
 
 def find_anchors(n, adj_start, adj_vertex, adj_rest, inv_mass, anchor, tether):
@@ -69,9 +70,10 @@ def list_fixed(inv_mass, n, fixed):
     return count
 
 
-def over_reach(pos, held, fixed, n_fixed, cols, spacing, intact, piece):
-    """How far the hands have pulled the cloth beyond its reach: the largest ratio, at least
-    1, of a held vertex's distance from another fixed vertex to the two's rest distance.
+def over_reach(pos, held, fixed, n_fixed, cols, consts, intact, piece, out):
+    """How far the hands have pulled the cloth beyond its reach (in out[0]): the largest ratio,
+    at least 1, of a held vertex's distance from another fixed vertex to the two's rest
+    distance.
 
     The tethers are scaled by it while anything is held. Unscaled, a vertex pulled beyond
     reach leaves the vertices tied to it and those tied to the pins each within their own
@@ -79,6 +81,7 @@ def over_reach(pos, held, fixed, n_fixed, cols, spacing, intact, piece):
     (measured: max strain 3.2 for a 0.3 m over-pull of a 1 m curtain, against 0.74 for the
     seed's method); scaled, the edges share it out as an untethered cloth would."""
     worst = 1.0
+    spacing = consts[K_SPACING]
     h2 = spacing * spacing
     for j in range(n_fixed):            # a held vertex is fixed: it is in the list
         k = fixed[j]
@@ -100,7 +103,7 @@ def over_reach(pos, held, fixed, n_fixed, cols, spacing, intact, piece):
             d2 = dx * dx + dy * dy
             if d2 > worst * worst * rest2:
                 worst = math.sqrt(d2 / rest2)
-    return worst
+    out[0] = worst
 
 
 def label_pieces(n, adj_start, adj_vertex, piece, stack):

@@ -143,9 +143,11 @@ def test_the_charts_draw(open_page):
 
 def test_compare_mode_recording_replays_per_panel_and_a_link_reopens_it(open_page):
     pg = open_page()
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps({'cols': 20, 'rows': 15, 'spacing': 0.1,
+                                                       'pins': list(range(0, 20, 4)) + [19], 'damping': 1}))
     pg.js('(l) => clothApp.compare(l.concat([{"substeps": 3, "tethers": false}]))', PAIR)
     pg.js('clothApp.setPaused(true)')
-    x, y = panels(pg)[0]['screen'][BOTTOM]
+    x, y = panels(pg)[0]['screen'][14 * 20 + 10]
     pg.mouse.move(x, y)
     pg.mouse.down()
     for i in range(1, 10):

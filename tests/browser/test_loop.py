@@ -19,6 +19,19 @@ def test_a_long_gap_never_injects_a_big_step(open_page):
     assert f2 - f1 <= 4 + 2, (f1, f2)   # MAX_CATCHUP, then one frame per 1/60 s
     st = pg.state()
     assert all(v == v and abs(v) < 1e3 for p in st['positions'] for v in p)
+    # a drag across the gap and the catch-up frames: the recording replays it exactly
+    x, y = st['screen'][29 * 40 + 20]
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    pg.mouse.move(x + 50, y - 40, steps=4)
+    pg.clock.run_for(100)
+    pg.clock.fast_forward(3000)             # another stall, with the vertex held
+    pg.mouse.move(x - 30, y - 80, steps=4)
+    pg.clock.run_for(200)
+    pg.mouse.up()
+    pg.clock.run_for(100)
+    from test_recording_page import assert_replays
+    assert_replays(pg)
 
 
 def test_a_cloth_at_rest_sleeps_until_touched(open_page):

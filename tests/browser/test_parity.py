@@ -133,7 +133,21 @@ SCENES = {
         {'frame': 40, 'op': 'release', 'vertex': 40}]), 80),
     'seed-tear-and-cut': (grid(8, 8, pins=[0, 7], solver='jakobsen', tear=0.05, actions=[
         {'frame': 15, 'op': 'cut', 'from': [0.2, 0.1], 'to': [0.25, -1.2]}]), 60),
+    # Every edge cut, the pinned pair 0-1 apart too: a dust of particles, each in free fall
+    # (the curtain hangs at its rest grid, so blades between the rows and columns cut it all).
+    'cut-every-edge': (grid(6, 6, pins=[0, 1, 2, 3, 4, 5], actions=[
+        {'frame': 60, 'op': 'cut', 'from': [(c + 0.5) * 0.2, 0.5], 'to': [(c + 0.5) * 0.2, -1.5]}
+        for c in range(5)] + [
+        {'frame': 60, 'op': 'cut', 'from': [-0.5, -(r + 0.5) * 0.2], 'to': [1.5, -(r + 0.5) * 0.2]}
+        for r in range(5)]), 100),
 }
+
+
+def test_cut_every_edge_leaves_a_dust_in_free_fall(core):
+    scene, frames = SCENES['cut-every-edge']
+    out = json.loads(core(json.dumps(scene), frames)['ok'])
+    assert out['edges'] == [] and all(q == 0 for q in out['node_stress'])
+    assert out['positions'][1] == [0.2, 0]              # the pinned pair, cut apart, stays
 
 
 @pytest.mark.parametrize('name', sorted(SCENES))
@@ -161,6 +175,12 @@ def test_larger_grid_many_frames(core):
     ('{"cols": 2, "rows": 2, "spacing": 1, "\\ud800\\ud83d\\ude00": 1}', 1),
     ('{"cols": 2, "rows": 2, "spacing": 1, "actions": [{"frame": 0, "op": "set", "scene": {"rows": 3}}]}', 1),
     ('{"cols": 2, "rows": 2, "spacing": 1, "frames": 2.5}', None),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "tear": 0}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "tear": "0.3"}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "actions": [{"frame": 0, "op": "cut", "from": [0, 0]}]}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "actions": [{"frame": 0, "op": "cut", "vertex": 1, "from": [0, 0], "to": [1, 1]}]}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "compare": [{}]}', 1),
+    ('{"cols": 2, "rows": 2, "spacing": 1, "compare": [{}, {"rows": 3}]}', 1),
 ])
 def test_same_error_message_in_both_runtimes(core, text, frames):
     with pytest.raises(SceneError) as err:

@@ -60,6 +60,14 @@ def sampled_bytes(node):
     return node['selfSize'] + sum(sampled_bytes(c) for c in node['children'])
 
 
+def bytes_under(node, name, inside=False):
+    """What the page's own code under function `name` allocated: the profile also holds the
+    engine's idle-time external bookkeeping and Playwright's serialisation of the result, which
+    grow with the run's length, not with the frames."""
+    inside = inside or node['callFrame']['functionName'] == name
+    return (node['selfSize'] if inside else 0) + sum(bytes_under(c, name, inside) for c in node['children'])
+
+
 @pytest.mark.soak
 def test_soak_heap_flat_and_no_nan(app):
     page, cdp, errors = app
@@ -89,6 +97,29 @@ def test_hot_path_allocates_nothing_per_frame(app):
     # One advance() call (the evaluate itself, one measure and one render) may allocate a few
     # KB; an allocation in the per-frame path would be frames x its size.
     assert total / frames < 8, 'about %.1f bytes allocated per frame' % (total / frames)
+
+
+def test_a_moving_cloth_allocates_nothing_per_frame(app):
+    """The solver's whole path (tethers, cells, sweeps, line solves, the tear check) on a cloth
+    that never rests (no damping, no sleep, swinging after a throw): the test above times a curtain
+    that falls asleep and so steps nothing. A double passed to a kernel that is not inlined
+    was a fresh heap number per call (about 50 bytes a frame through the line solves) until
+    the kernels read their constants from a typed array (solve.K_*)."""
+    page, cdp, _ = app
+    page.evaluate('''() => {
+        const pins = []; for (let c = 0; c < 40; c += 3) pins.push(c); pins.push(39);
+        clothApp.loadScene(JSON.stringify({cols: 40, rows: 30, spacing: 0.1, damping: 0, sleep: false,
+                                           pins: pins, tear: 10}));
+        const ops = clothCore.ops(clothApp.cloth());
+        ops.grab(1170, 1.5, -1.5); ops.release(1170);
+        clothApp.advance(2000); }''')
+    frames = 2000
+    cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256})
+    page.evaluate('(n) => clothApp.advance(n)', frames)
+    profile = cdp.send('HeapProfiler.stopSampling')['profile']
+    assert not page.evaluate('clothApp.cloth().asleep')
+    total = bytes_under(profile['head'], 'advance')
+    assert total / frames < 2, 'about %.1f bytes allocated per frame' % (total / frames)
 
 
 @st.composite

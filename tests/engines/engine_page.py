@@ -120,7 +120,10 @@ class Locator:
         return not self.is_visible()
 
     def centre(self):
-        r = self._el('const r = el.getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2];')
+        """The element's middle in the viewport, scrolled into view first (as a person scrolls
+        the side panel to reach a control below the fold)."""
+        r = self._el('el.scrollIntoView({block: "center"}); const r = el.getBoundingClientRect();'
+                     ' return [r.left + r.width / 2, r.top + r.height / 2];')
         return round(r[0]), round(r[1])
 
     def click(self):

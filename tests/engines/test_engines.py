@@ -474,15 +474,11 @@ def test_record_export_link_and_replay_give_the_same_positions(open_page):
 
 
 def test_link_copies_the_address_from_a_key_and_from_the_button(open_page, engine, request):
-    """README: "Link (L) copies an address with the recording in its fragment". share.copy
-    calls navigator.clipboard.writeText once the link is made, after CompressionStream's
-    promise: WebKit no longer counts that as the key press or click (NotAllowedError), so the
-    page falls back to window.prompt every time. Writing a ClipboardItem whose text is a Promise
-    of the link, in the handler itself, is allowed in all three engines (tried)."""
-    if engine.name == 'webkit':
-        request.node.add_marker(pytest.mark.xfail(strict=True, reason=(
-            'page defect (#16): in WebKit, Link (L, the Link button) never copies: writeText after '
-            'the CompressionStream promise is refused (NotAllowedError) and the page opens a prompt')))
+    """README: "Link (L) copies an address with the recording in its fragment". Found here:
+    writeText once the link was made, after CompressionStream's promise, was refused in WebKit
+    (NotAllowedError: no longer the key press or click) and the page fell back to a prompt
+    every time. share.copyLater writes a ClipboardItem whose text is a Promise of the link, in
+    the handler itself, which all three engines allow."""
     outcomes = []
     for press in ['key', 'button']:
         pg = open_page('?paused=1')
@@ -537,13 +533,59 @@ def test_open_a_file_by_the_picker_and_by_a_drop(open_page, tmp_path):
     rec.test_open_a_file_by_the_picker_and_by_a_drop(open_page, tmp_path)
 
 
-# ---- not in the page yet ---------------------------------------------------------------------
+# ---- compare mode (#14) and the blade (#15) ----------------------------------------------------
 
-@pytest.mark.skip(reason='issue #14: compare mode is not in the page yet; its engine test goes here')
+PAIR = [{'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}, {'solver': 'xpbd', 'substeps': 8, 'iterations': 1}]
+
+
 def test_compare_mode(open_page):
-    pass
+    """A real mouse drag in panel 2 holds the vertex under the pointer there and puts the same
+    vertex at the same doubles in panel 1; the recording replays each panel in the CLI."""
+    pg = open_page('?paused=1')
+    assert pg.js('(l) => clothApp.compare(l)', PAIR)
+    pg.js('clothApp.advance(30)')
+    k = 29 * 40 + 20
+    x, y = (round(v) for v in pg.js('(k) => clothApp.panels()[1].screen[k]', k))
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    for px, py in [(x + 40, y - 30), (x + 70, y - 80)]:
+        pg.mouse.move(px, py, steps=3)
+        pg.js('clothApp.advance(2)')
+        ps = pg.js('clothApp.panels()')
+        assert near(ps[1]['screen'][k], (px, py)), (ps[1]['screen'][k], (px, py))
+        assert ps[0]['positions'][k] == ps[1]['positions'][k]
+    pg.mouse.up()
+    pg.js('clothApp.advance(10)')
+    text = pg.js('clothApp.recording()')
+    ps = pg.js('clothApp.panels()')
+    assert json.loads(text)['compare'] == PAIR
+    for i in range(2):
+        assert json.loads(api.run(text, None, False, i))['positions'] == ps[i]['positions'], i
+    assert pg.js('clothApp.compare([])') and pg.info()['panels'] == 1
 
 
-@pytest.mark.skip(reason='issue #15: the blade is not in the page yet; its engine test goes here')
 def test_the_blade_cuts(open_page):
-    pass
+    """The Cut tool (the X key) and a real mouse drag: the edges the pointer's path crosses
+    break, the cuts are recorded, and the recording replays in CPython (Alt+drag is the same
+    code with the tool off; WebDriver's modifier keys are not needed for it)."""
+    pg = open_page('?paused=1')
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps(
+        {'cols': 14, 'rows': 10, 'spacing': 0.1, 'pins': [0, 4, 9, 13], 'damping': 1}))
+    pg.js('clothApp.setPaused(true)')
+    pg.js('clothApp.advance(30)')
+    pg.key('x')
+    assert pg.info()['cutTool']
+    st = pg.state()['screen']
+    y = round((st[4 * 14][1] + st[5 * 14][1]) / 2)
+    x0, x1 = round(st[4 * 14][0]) - 30, round(st[4 * 14 + 13][0]) + 30
+    pg.mouse.move(x0, y)
+    pg.mouse.down()
+    pg.mouse.move(x1, y, steps=6)
+    pg.mouse.up()
+    assert pg.info()['broken'] == 14 and not any(pg.state()['held'])
+    pg.js('clothApp.advance(20)')
+    text = pg.js('clothApp.recording()')
+    assert [a['op'] for a in json.loads(text)['actions']].count('cut') >= 1
+    assert json.loads(api.run(text))['positions'] == pg.state()['positions']
+    pg.key('r')
+    assert pg.info()['broken'] == 0
