@@ -10,7 +10,7 @@ window.clothBlade = (function () {
   function create(canvas) {
     const ctx = canvas.getContext('2d');
     const pts = new Float64Array(3 * N);
-    let head = 0, count = 0, shown = false, cssW = 0, cssH = 0, dpr = 1;
+    let head = 0, count = 0, shown = false;
 
     // A point of a stroke at time t (ms); `start`: a new stroke (not joined to the last).
     function add(x, y, t, start) {
@@ -24,15 +24,6 @@ window.clothBlade = (function () {
       if (count < N) count++;
     }
 
-    function size() {
-      const r = canvas.getBoundingClientRect();
-      dpr = window.devicePixelRatio || 1;
-      cssW = Math.max(1, r.width); cssH = Math.max(1, r.height);
-      const w = Math.round(cssW * dpr), h = Math.round(cssH * dpr);
-      if (canvas.width !== w) canvas.width = w;
-      if (canvas.height !== h) canvas.height = h;
-    }
-
     // Draw the trail as it is at time `now` (ms); returns whether anything is left to fade.
     function draw(now) {
       if (!ctx) return false;
@@ -42,9 +33,8 @@ window.clothBlade = (function () {
         live = now - pts[3 * i + 2] < TRAIL_MS;
       }
       if (!live && !shown) return false;
-      size();
-      ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-      ctx.clearRect(0, 0, cssW, cssH);
+      const box = window.clothCanvas2d.fit(canvas, ctx);
+      ctx.clearRect(0, 0, box.w, box.h);
       shown = live;
       if (!live) return false;
       ctx.lineCap = 'round';

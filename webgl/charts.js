@@ -17,7 +17,7 @@ window.clothCharts = (function () {
     const ctx = canvas.getContext('2d');
     const strain = [], ms = [];
     for (let i = 0; i < MAX_SERIES; i++) { strain.push(new Float64Array(N)); ms.push(new Float64Array(N)); }
-    let head = 0, count = 0, series = 1, lastT = -1, cssW = 0, cssH = 0, dpr = 1;
+    let head = 0, count = 0, series = 1, lastT = -1;
 
     function reset(n) {
       series = Math.max(1, Math.min(n, MAX_SERIES));
@@ -33,15 +33,6 @@ window.clothCharts = (function () {
       head = (head + 1) % N;
       if (count < N) count++;
       return true;
-    }
-
-    function size() {
-      const r = canvas.getBoundingClientRect();
-      dpr = window.devicePixelRatio || 1;
-      cssW = Math.max(1, r.width); cssH = Math.max(1, r.height);
-      const w = Math.round(cssW * dpr), h = Math.round(cssH * dpr);
-      if (canvas.width !== w) canvas.width = w;
-      if (canvas.height !== h) canvas.height = h;
     }
 
     // One chart in the box (x, y, w, h), CSS px. value(i, j): series i's j-th oldest sample
@@ -105,8 +96,8 @@ window.clothCharts = (function () {
 
     function draw() {
       if (!ctx) return;
-      size();
-      ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+      const box = window.clothCanvas2d.fit(canvas, ctx);
+      const cssW = box.w, cssH = box.h;
       ctx.clearRect(0, 0, cssW, cssH);
       let top = 0;
       for (let i = 0; i < series; i++) {

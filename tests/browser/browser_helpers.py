@@ -1,6 +1,7 @@
 """Paths, launch flags and small helpers shared by the browser tests."""
 import os
 import pathlib
+import time
 
 # CLOTH_ROOT lets the suite test another checkout's dist/ (default: this repository).
 ROOT = pathlib.Path(os.environ.get('CLOTH_ROOT') or pathlib.Path(__file__).absolute().parents[2])
@@ -21,3 +22,22 @@ def free_vertex(state, cols, rows):
 
 def near(a, b, tol):
     return abs(a[0] - b[0]) <= tol and abs(a[1] - b[1]) <= tol
+
+
+def wait_until(pg, expr, timeout=20.0):
+    """Poll a page expression until it is true (the page's CSP forbids the eval that
+    Playwright's wait_for_function uses for a string that is not a function)."""
+    end = time.time() + timeout
+    while time.time() < end:
+        if pg.js(expr):
+            return
+        time.sleep(0.03)
+    raise AssertionError('timed out waiting for ' + expr)
+
+
+def bytes_under(node, name, inside=False):
+    """What the page's own code under function `name` allocated, in a sampling heap profile:
+    the profile also holds the engine's idle-time external bookkeeping and Playwright's
+    serialisation of the result, which grow with the run's length, not with the frames."""
+    inside = inside or node['callFrame']['functionName'] == name
+    return (node['selfSize'] if inside else 0) + sum(bytes_under(c, name, inside) for c in node['children'])

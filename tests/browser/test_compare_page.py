@@ -4,22 +4,12 @@ touch through CDP); the CLI's `--panel N` replays each panel."""
 import json
 import subprocess
 import sys
-import time
 
-from browser_helpers import ROOT
+from browser_helpers import ROOT, wait_until
 
 PAIR = [{'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}, {'solver': 'xpbd', 'substeps': 8, 'iterations': 1}]
 COLS, ROWS = 40, 30           # the curtain preset
 BOTTOM = 29 * 40 + 20
-
-
-def wait_until(pg, expr, timeout=20.0):
-    end = time.time() + timeout
-    while time.time() < end:
-        if pg.js(expr):
-            return
-        time.sleep(0.03)
-    raise AssertionError('timed out waiting for ' + expr)
 
 
 def panels(pg):

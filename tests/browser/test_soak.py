@@ -12,6 +12,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from conftest import DIST
+from browser_helpers import bytes_under
 
 SOAK_FRAMES = int(os.environ.get('CLOTH_SOAK_FRAMES', '10000'))
 BATCH = 1000
@@ -60,13 +61,6 @@ def sampled_bytes(node):
     return node['selfSize'] + sum(sampled_bytes(c) for c in node['children'])
 
 
-def bytes_under(node, name, inside=False):
-    """What the page's own code under function `name` allocated: the profile also holds the
-    engine's idle-time external bookkeeping and Playwright's serialisation of the result, which
-    grow with the run's length, not with the frames."""
-    inside = inside or node['callFrame']['functionName'] == name
-    return (node['selfSize'] if inside else 0) + sum(bytes_under(c, name, inside) for c in node['children'])
-
 
 @pytest.mark.soak
 def test_soak_heap_flat_and_no_nan(app):
@@ -112,7 +106,7 @@ def test_a_moving_cloth_allocates_nothing_per_frame(app):
                                            pins: pins, tear: 10}));
         const ops = clothCore.ops(clothApp.cloth());
         ops.grab(1170, 1.5, -1.5); ops.release(1170);
-        clothApp.advance(2000); }''')
+        clothApp.advance(3000); }''')
     frames = 2000
     cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256})
     page.evaluate('(n) => clothApp.advance(n)', frames)
