@@ -99,6 +99,32 @@
     return ms;
   };
 
+  // Tearing's check on its own (issue #15): the check a frame makes (cloth/solve.py
+  // mark_overstretched over every edge, at a limit nothing reaches, so nothing breaks and the
+  // state is the same each call) against whole frames of the same cloth, timed one after the
+  // other on the same state. Frame-to-frame timings of two configurations differ by more than
+  // the check costs on these machines; the check timed by itself does not.
+  B.tearSetup = function (text) {
+    B.tear = M.run(clothCore.load(text));
+    if (!(B.tear.cloth.tear > 0)) throw new Error('the scene sets no tear limit');
+  };
+  B.tearRound = function (frames) {  // ms of `frames` frames, and of as many checks
+    const r = B.tear, cl = r.cloth;
+    const mark = clothTranscrypt.modules['cloth.solve'].mark_overstretched;
+    const most = cl.tear_q.length;
+    M.step(r, frames, 0);
+    const t0 = performance.now();
+    let found = 0;
+    // Ten checks a frame: a check is microseconds and the clock's step 100 us on file://.
+    for (let i = 0; i < 10 * frames; i++) {
+      found += mark(cl.pos, cl.edge_a, cl.edge_b, cl.rest, cl.n_edges, cl.consts, most,
+                    cl.tear_q, cl.tear_e);
+    }
+    const check = performance.now() - t0;
+    if (found > 0) throw new Error('the check broke edges: the limit is reached');
+    return { frame_ms: r.ms, check_ms: check / 10, converged: !!cl.converged };
+  };
+
   // ---- the speed-of-light yardstick: the seed's method, hand-written --------------------
   function kernelFrames(s, frames) {
     const pos = s.pos, prev = s.prev, w = s.w, ea = s.ea, eb = s.eb, rest = s.rest;

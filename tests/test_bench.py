@@ -82,6 +82,13 @@ def test_json_matches_the_table(quick):
     # The hand-written kernel is the seed's method exactly: same positions, bit for bit.
     assert data['speed_of_light']['bit_identical'] is True
     assert (out / 'bench-quick.svg').read_text().startswith('<svg')
+    # Tearing's check timed by itself, on scenes where every frame makes it; nothing broke
+    # (the page throws if the limit was reached) and the figures are finite.
+    tear = data['tear_check']
+    assert {(t['scene'], t['size']) for t in tear} == {('corners', 30), ('dynamic', 30)}
+    for t in tear:
+        assert t['check_ms'] > 0 and t['frame_ms'] > t['check_ms'], t
+    assert "Tearing's check" in (out / 'bench-quick.md').read_text()
 
 
 def test_gestures_table(tmp_path):
