@@ -60,7 +60,7 @@
 
   const ui = window.clothUI.create({
     pause: function () { setPaused(!s.paused); },
-    step: function () { setPaused(true); advance(1); },
+    step: function () { setPaused(true); advance(1); sampleCharts(true); },
     reset: function () { reset(); },
     preset: function (name) { usePreset(name); },
     solver: function (name) { setSolver(name); },
@@ -359,6 +359,10 @@
   function setCharts(on) {
     document.getElementById('charts').hidden = !on;
     if (on) charts.draw();
+    layout();
+    input.reproject();   // a held vertex stays under its pointer as the view moves
+    measureOverlays();
+    s.dirty = true;
   }
 
   // Keys that leave the grid as it is apply to the running cloth (core.setSettings): its
@@ -579,23 +583,28 @@
       p.cloth.measure();
       const ms = p.cloth.asleep ? NaN : p.run.ms / done;
       p.simMs = Number.isFinite(p.simMs) && Number.isFinite(ms) ? p.simMs + EMA * (ms - p.simMs) : ms;
-      // The core's max_speed safety net engaged: the settings are unstable (one sweep per
-      // step on an undamped grid). Say so rather than let it pass silently.
+      // The core's max_speed safety net engaged. Say so rather than let it pass silently,
+      // and say why: a hand that moved faster than the cloth can follow (metres in a frame),
+      // or settings that pump energy (one sweep per step on an undamped grid).
       if (p.cloth.clamped > p.clamped) {
         p.clamped = p.cloth.clamped;
-        const speed = p.cloth.scene.max_speed;
-        const which = s.panels.length > 1 ? 'Panel ' + (i + 1) + ': ' : '';
-        // (Damping does not cure it: measured, 1.8 million capped vertex-steps with damping 1.)
-        ui.note(which + (speed < 1000
-          ? 'Speeds were capped at the scene\'s max_speed of ' + speed + ' m/s'
-          : 'Unstable settings: speeds were capped at max_speed; use more iterations or ' +
-            'substeps, or the default solver'));
+        ui.note((s.panels.length > 1 ? 'Panel ' + (i + 1) + ': ' : '') + cappedNote(p.cloth));
       }
     }
     s.needMeasure = false;
     s.dirty = true;
     atReplayEnd();
     return done;
+  }
+
+  function cappedNote(cloth) {
+    const speed = cloth.scene.max_speed;
+    const capped = 'speeds were capped at ' + (speed < 1000 ? 'the scene\'s max_speed of ' : 'max_speed, ') + speed + ' m/s';
+    if (cloth.n_held > 0) return 'A very fast drag: ' + capped + ' (the hand moved faster than the cloth can follow)';
+    if (speed < 1000) return capped.charAt(0).toUpperCase() + capped.slice(1);
+    // (Damping does not cure it: measured, 1.8 million capped vertex-steps with damping 1.)
+    return 'Unstable settings: ' + capped + '; use more iterations or substeps' +
+      (cloth.use_xpbd ? '' : ', or the default solver');
   }
 
   function atReplayEnd() {
@@ -698,16 +707,25 @@
                       complete: recorder.complete(s.frames), replayEnd: s.replayEnd });
     if (s.panels.length > 1) {
       s.panels.forEach(function (p, i) {
-        compareUI.setLabel(i, (i + 1) + ' · ' + measure.label(p.cloth) + '\n' +
-          (Number.isFinite(p.simMs) ? p.simMs.toFixed(2) + ' ms/frame' : 'at rest') +
-          ' · strain rms ' + fmt(p.cloth.rms_strain) + ' · max ' + fmt(p.cloth.max_strain));
+        // Two lines, each cut short with an ellipsis where the panel is narrow (style.css); a
+        // narrow panel (a phone, four panels) gets the short label: the solver and its steps,
+        // the cost and the RMS strain.
+        const r = s.rects[i], small = !r || r.w < 340, label = measure.label(p.cloth);
+        compareUI.setLabel(i, (i + 1) + ' · ' + (small ? label.split(',')[0] : label) + '\n' +
+          (Number.isFinite(p.simMs) ? p.simMs.toFixed(2) + (small ? ' ms' : ' ms/frame') : 'at rest') +
+          ' · ' + (small ? 'rms ' : 'strain rms ') + fmt(p.cloth.rms_strain) +
+          (small ? '' : ' · max ' + fmt(p.cloth.max_strain)));
       });
     }
   }
 
-  // Charts: a sample of each panel every clothCharts.SAMPLE_MS while the simulation runs.
+  // Charts: a sample of each panel every clothCharts.SAMPLE_MS while the simulation runs, and
+  // one for every frame stepped by hand.
   function panelRms(i) { return s.panels[i].cloth.rms_strain; }
   function panelMs(i) { return s.panels[i].simMs; }
+  function sampleCharts(every) {
+    if (charts.sample(performance.now(), panelRms, panelMs, every) && !document.getElementById('charts').hidden) charts.draw();
+  }
 
   function tick(nowMs) {
     window.requestAnimationFrame(tick);
@@ -727,7 +745,7 @@
         s.acc = done < due || Math.floor(s.acc / dt) > MAX_CATCHUP ? 0 : s.acc - done * dt;
         s.wanted += gap;
         s.played += allAsleep() ? gap : done * dt;
-        if (charts.sample(nowMs, panelRms, panelMs) && !document.getElementById('charts').hidden) charts.draw();
+        sampleCharts(false);
       }
       if (s.dirty) render();
       if (s.trail) s.trail = blade.draw(performance.now());
@@ -740,18 +758,37 @@
 
   // ---- geometry and input ---------------------------------------------------
 
-  // The panels' rectangles for the canvas's size (one panel: all of it).
+  // The panels' rectangles for the canvas's size, above the overlays' band (one panel: all
+  // of the canvas, its view fitted above the band).
   function layout() {
     if (!renderer.ok) return;
-    const n = s.panels.length, v = s.view;
+    const n = s.panels.length, v = s.view, w = renderer.cssWidth, h = renderer.cssHeight - overlayBand();
     s.rects = n > 1
-      ? window.clothCompare.layout(n, renderer.cssWidth, renderer.cssHeight, v.x1 - v.x0, v.y1 - v.y0)
-      : [{ x: 0, y: 0, w: renderer.cssWidth, h: renderer.cssHeight }];
+      ? window.clothCompare.layout(n, w, h, v.x1 - v.x0, v.y1 - v.y0)
+      : [{ x: 0, y: 0, w: w, h: h }];
     s.panels.forEach(function (p, i) {
-      if (n > 1) p.draw.setRect(s.rects[i].x, s.rects[i].y, s.rects[i].w, s.rects[i].h);
+      const r = s.rects[i];
+      // A panel's cloth is fitted below its label (two lines, compare.js), where there is room.
+      const top = n > 1 && r.h > 3 * LABEL_HEIGHT ? LABEL_HEIGHT : 0;
+      if (n > 1) p.draw.setRect(r.x, r.y, r.w, r.h);
       else p.draw.setRect();
+      p.draw.setFit(r.x, r.y + top, r.w, r.h - top);
     });
     compareUI.placeLabels(n > 1 ? s.rects : []);
+  }
+
+  const LABEL_HEIGHT = 44;    // CSS px: a panel label's two lines, its padding and offset
+
+  // The height of the band at the stage's foot that the readouts, the legend and the charts
+  // take (CSS px): views are fitted above it, so that they do not cover a cloth at rest. At
+  // most 40% of the canvas: on a small stage a cloth too small to see would be worse. Measured
+  // when the layout changes (a resize, compare mode, the charts shown or hidden), not as the
+  // readouts' numbers change, so the view never jumps under a hand.
+  function overlayBand() {
+    const o = document.getElementById('overlays').getBoundingClientRect();
+    const c = canvas.getBoundingClientRect();
+    if (!(o.height > 0) || !(c.height > 0)) return 0;
+    return Math.max(0, Math.min(c.bottom - o.top + 4, 0.4 * c.height));
   }
 
   // The panel under a point of the canvas (CSS px), or -1.
@@ -949,7 +986,7 @@
         scale: s.scale, fullScale: s.fullScale, frames: s.frames, preset: s.preset, params: s.params,
         asleep: !!(s.cloth && allAsleep()), renders: s.renders,
         replay: { playing: s.replayEnd >= 0, end: s.replayEnd, ended: s.replayEnded },
-        linkPending: !!s.linkPending, panels: s.panels.length, simMs: simMs,
+        linkPending: !!s.linkPending, panels: s.panels.length, simMs: simMs, chartLatest: charts.latest(0),
         edges: s.cloth ? s.cloth.n_edges : 0, broken: s.cloth ? s.cloth.broken : 0, cutTool: bladeOn,
         recorded: recorder.count(), recordingFull: recorder.full(),
         error: ui.errorText(), note: ui.noteText(), scene: s.sceneText,
@@ -962,6 +999,15 @@
 
   ui.setMode(s.mode);
   ui.setScale(s.scaleMode, s.fullScale);
+  // On a small stage (a phone) the charts start hidden: with the readouts they would take
+  // most of it. The Live charts box shows them.
+  {
+    const r = canvas.getBoundingClientRect();
+    if (r.width < 420 || r.height < 420) {
+      document.getElementById('charts-on').checked = false;
+      document.getElementById('charts').hidden = true;
+    }
+  }
   ui.setPaused(false);
   try {
     usePreset(options.preset);
@@ -971,20 +1017,23 @@
   if (options.paused) setPaused(true);
   if (options.notes.length) ui.note(options.notes.join('. '));
   // A link: the scene (a recording) in the fragment replaces the preset once decoded; it
-  // replays and stops at its last frame. One that cannot be read leaves the preset running.
-  // A link pasted into the address bar of the open page changes only the fragment: the same.
+  // replays and stops at its last frame. One that cannot be read leaves what runs running
+  // (the URL's preset, on opening), and says which it is. A link pasted into the address bar
+  // of the open page changes only the fragment: the same, over whatever the person had.
   function openLink() {
     const linked = share.sceneIn(window.location.hash);
     if (!linked) return;
+    const wasPaused = s.paused;
     setPaused(true);
     s.linkPending = true;
     linked.then(function (text) {
       load(text, 'custom', null);
       ui.note('Replaying the recording from the link (' + s.replayEnd + ' frames); a gesture takes over');
     }).catch(function (e) {
-      if (s.preset !== options.preset) usePreset(options.preset);
-      ui.error('The link could not be opened: ' + core.message(e) + '; showing the default scene');
-      setPaused(options.paused);
+      const shown = own(scenes.PRESETS, s.preset)
+        ? 'showing the ' + scenes.PRESETS[s.preset].label + ' preset' : 'the scene shown runs on';
+      ui.error('The link could not be opened: ' + core.message(e) + '; ' + shown);
+      setPaused(wasPaused);
     }).then(function () { s.linkPending = false; });
   }
   openLink();

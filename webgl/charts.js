@@ -25,9 +25,10 @@ window.clothCharts = (function () {
     }
 
     // Offer a sample at wall-clock time t (ms): kept when SAMPLE_MS have passed since the
-    // last one. rms(i) and simMs(i) give panel i's values. Returns whether it was kept.
-    function sample(t, rms, simMs) {
-      if (lastT >= 0 && t - lastT < SAMPLE_MS) return false;
+    // last one, or always when `every` (a frame stepped by hand is an event of its own).
+    // rms(i) and simMs(i) give panel i's values. Returns whether it was kept.
+    function sample(t, rms, simMs, every) {
+      if (!every && lastT >= 0 && t - lastT < SAMPLE_MS) return false;
       lastT = t;
       for (let i = 0; i < series; i++) { strain[i][head] = rms(i); ms[i][head] = simMs(i); }
       head = (head + 1) % N;
@@ -44,6 +45,10 @@ window.clothCharts = (function () {
       ctx.fillStyle = '#8b93a3';
       ctx.font = '10px ui-monospace, Menlo, Consolas, monospace';
       ctx.textBaseline = 'top';
+      ctx.save();                        // nothing drawn past the chart's box
+      ctx.beginPath();
+      ctx.rect(x, y, w, h);
+      ctx.clip();
       ctx.fillText(title, x + 3, y + 2);
       // the current values, one per panel in its colour
       let tx = x + 6 + ctx.measureText(title).width;
@@ -55,7 +60,9 @@ window.clothCharts = (function () {
       }
       ctx.fillStyle = '#8b93a3';
       ctx.textBaseline = 'alphabetic';
-      ctx.fillText(hi, x + w - ctx.measureText(hi).width - 3, y + 12);
+      // The axis' top label goes a line lower where the values reach it (four panels).
+      const hiW = ctx.measureText(hi).width;
+      ctx.fillText(hi, x + w - hiW - 3, tx - 6 > x + w - hiW - 6 ? y + 24 : y + 12);
       ctx.fillText(lo, x + w - ctx.measureText(lo).width - 3, y + h - 3);
       ctx.fillText('−' + WINDOW + ' s', x + 3, y + h - 3);
       for (let i = 0; i < series; i++) {
@@ -74,6 +81,7 @@ window.clothCharts = (function () {
         }
         ctx.stroke();
       }
+      ctx.restore();
     }
 
     let msTop = 1;    // the ms axis' top: a round number above the largest sample shown

@@ -93,9 +93,12 @@ window.clothCompare = (function () {
     function field(i, key, value) {
       const f = FIELDS[key];
       const input = document.createElement('input');
-      input.type = 'number';
-      input.min = String(f.min); input.max = String(f.max);
-      input.step = f.int ? '1' : 'any';
+      // Text, not type=number: empty means "the scene's", and a number field reports letters
+      // as empty too, so `abc` would silently become the scene's value.
+      input.type = 'text';
+      input.inputMode = f.int ? 'numeric' : 'decimal';
+      input.autocomplete = 'off';
+      input.spellcheck = false;
       input.placeholder = 'scene';
       input.value = value === undefined ? '' : String(value);
       input.setAttribute('aria-label', 'Panel ' + (i + 1) + ' ' + f.label);

@@ -198,7 +198,7 @@ window.clothRenderer = (function () {
       let spacing = 1;  // the grid's rest length, metres: sets the edge width
       // The panel's rectangle in the canvas (CSS px; null: the whole canvas), and
       // world -> canvas CSS pixels: cssX = ox + s * x, cssY = oy - s * y.
-      let rect = null;
+      let rect = null, fitBox = null;
       let s = 1, ox = 0, oy = 0;
 
       function buffers() {
@@ -216,9 +216,10 @@ window.clothRenderer = (function () {
         return rect || { x: 0, y: 0, w: r.cssWidth, h: r.cssHeight };
       }
 
-      // Fit the view box inside the panel's rectangle less a small inset, keeping aspect.
+      // Fit the view box inside the panel's rectangle (or the part of it set by setFit) less
+      // a small inset, keeping aspect.
       p.fit = function () {
-        const b = box();
+        const b = fitBox || box();
         const bw = Math.max(view.x1 - view.x0, 1e-9), bh = Math.max(view.y1 - view.y0, 1e-9);
         const inset = Math.min(16, b.w / 8, b.h / 8);
         s = Math.max(Math.min((b.w - 2 * inset) / bw, (b.h - 2 * inset) / bh), 1e-9);
@@ -250,6 +251,12 @@ window.clothRenderer = (function () {
       // The panel's rectangle, CSS px inside the canvas (null: all of it).
       p.setRect = function (x, y, w, h) {
         rect = w === undefined ? null : { x: x, y: y, w: Math.max(w, 1), h: Math.max(h, 1) };
+        p.fit();
+      };
+      // Where in the rectangle the view is fitted (CSS px inside the canvas; null: all of
+      // it): the cloth is drawn over the whole rectangle, fitted clear of the overlays.
+      p.setFit = function (x, y, w, h) {
+        fitBox = w === undefined ? null : { x: x, y: y, w: Math.max(w, 1), h: Math.max(h, 1) };
         p.fit();
       };
       p.rect = function () { return box(); };

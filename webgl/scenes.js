@@ -53,6 +53,7 @@ window.clothScenes = (function () {
   }
 
   // size: the cloth's larger side in metres; the spacing follows from the grid.
+  const CARRY_FRAMES = 60;   // the Two corners preset carries its corner in over 1 s
   const PRESETS = {
     curtain: {
       label: 'Curtain',
@@ -65,13 +66,20 @@ window.clothScenes = (function () {
       params: { cols: 30, rows: 30 },
       size: 1.6,
       pins: function (cols) { return cols > 1 ? [0, cols - 1] : [0]; },
-      // Slack: at frame 0 the right corner is carried in to 80% of the width and pinned
-      // there, so the cloth hangs with its top row sagging (the scene where shape shows).
+      // Slack: the right corner is carried in to 80% of the width over the first second (a
+      // smooth start and stop) and pinned there, so the cloth hangs with its top row sagging
+      // (the scene where shape shows). Carried, not put there at frame 0: a corner moved
+      // 0.2 m in one frame flung the cloth at 11 m/s, up to 0.3 m over its pins.
       actions: function (cols, rows, spacing) {
         if (cols < 2) return [];
-        const k = cols - 1, x = 0.8 * (cols - 1) * spacing;
-        return [{ frame: 0, op: 'grab', vertex: k, to: [x, 0] },
-                { frame: 0, op: 'pin', vertex: k }, { frame: 0, op: 'release', vertex: k }];
+        const k = cols - 1, x0 = (cols - 1) * spacing, x1 = 0.8 * x0, frames = CARRY_FRAMES;
+        const out = [{ frame: 0, op: 'grab', vertex: k, to: [x0, 0] }];
+        for (let f = 1; f <= frames; f++) {
+          const t = 0.5 - 0.5 * Math.cos(Math.PI * f / frames);
+          out.push({ frame: f, op: 'move', vertex: k, to: [x0 + (x1 - x0) * t, 0] });
+        }
+        out.push({ frame: frames, op: 'pin', vertex: k }, { frame: frames, op: 'release', vertex: k });
+        return out;
       },
       sag: 0.6,
     },
@@ -194,6 +202,11 @@ window.clothScenes = (function () {
       const shown = text === '' ? '' : ' ("' + text.slice(0, 24) + '")';
       const what = Number.isNaN(v) ? 'not a number' : 'not a finite number';
       return { value: null, note: lim.label + ': ' + what + shown + '; the old value is kept' };
+    }
+    // A field where empty means off takes no negative value: a limit below zero is a slip of
+    // the hand, and its minimum (the most that tearing can do) would shred the cloth.
+    if (lim.off && v < 0) {
+      return { value: null, note: lim.label + ': ' + text.slice(0, 24) + ' is below 0 (0 or empty: off); the old value is kept' };
     }
     let note = '';
     if (lim.int && v !== Math.round(v)) { v = Math.round(v); note = lim.label + ' rounded to ' + v; }

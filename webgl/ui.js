@@ -246,7 +246,15 @@ window.clothUI = (function () {
       showHelp: function (show) {
         if (show === !el.helpBox.hidden) return;
         if (show) helpReturn = document.activeElement;
-        if (show) { el.helpBox.hidden = false; el.helpClose.focus(); return; }
+        if (show) {
+          el.helpBox.hidden = false;
+          // Focus without scrolling to the Close button at the card's end: the card opens at
+          // its title (on a phone the card scrolls, and focus() scrolled it to the bottom).
+          el.helpClose.focus({ preventScroll: true });
+          const card = el.helpBox.querySelector('.card');
+          if (card) card.scrollTop = 0;
+          return;
+        }
         hide(el.helpBox);
         if (helpReturn && helpReturn !== document.body && helpReturn.focus) helpReturn.focus();
         helpReturn = null;

@@ -124,6 +124,16 @@ def test_the_charts_draw(open_page):
     for colour in colours:
         hits = sum(n for key, n in lit.items() if near([int(v) for v in key.split(',')], colour))
         assert hits > 20, colour
+    # a frame stepped by hand while paused is charted at once (the titles show it)
+    pg.js('clothApp.setPaused(true)')
+    pg.locator('#gravity').fill('-60')
+    pg.locator('#gravity').press('Enter')
+    pg.locator('#view').click(position={'x': 5, 'y': 5})
+    for _ in range(5):
+        pg.keyboard.press('s')
+        got = pg.info()['chartLatest']
+        rms = [p['rms_strain'] for p in pg.js('clothApp.panels()')]
+        assert got[0] == rms[0], (got, rms)
     # shown for a single cloth too
     pg.js('clothApp.compare([])')
     assert pg.locator('#charts').is_visible()
@@ -194,6 +204,14 @@ def test_panel_settings_in_the_editor(open_page):
     sub.press('Enter')
     assert 'clamped to its maximum 16' in pg.info()['note']
     assert json.loads(panels(pg)[1]['scene'])['substeps'] == 16
+    # letters are not "empty" (empty means the scene's value): a note, nothing changed
+    for text in ['abc', 'Infinity', '-']:
+        sub = pg.locator('#compare-list input[data-key=substeps]').nth(1)
+        sub.fill('')
+        sub.type(text)
+        sub.press('Enter')
+        assert 'not a number' in pg.info()['note'], text
+        assert json.loads(panels(pg)[1]['scene'])['substeps'] == 16
     pg.locator('#btn-compare-add').click()
     pg.locator('#btn-compare-add').click()
     assert pg.info()['panels'] == 4 and pg.locator('#btn-compare-add').is_disabled()

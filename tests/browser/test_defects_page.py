@@ -43,6 +43,41 @@ def test_a_field_without_a_number_changes_nothing_and_says_so(open_page):
     assert 'not a number' in note(pg) and pg.info()['fullScale'] == 0.05
 
 
+def test_a_field_where_empty_means_off_tells_letters_from_empty(open_page):
+    """Tear is off when empty; letters typed into it are not "empty" (a number field reports
+    them as '' and tearing went off without a word), and a negative limit is a slip, not the
+    minimum that shreds the cloth."""
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    set_input(pg, '#tear', '0.5')
+    assert pg.info()['params']['tear'] == 0.5
+    for text in ['abc', 'Infinity', '1e400', 'NaN', '-', '0.5x']:
+        set_input(pg, '#tear', text)
+        assert 'not a' in note(pg), (text, note(pg))
+        assert pg.info()['params']['tear'] == 0.5 and pg.input_value('#tear') == '0.5', text
+    set_input(pg, '#tear', '-1')
+    assert 'below 0' in note(pg) and pg.info()['params']['tear'] == 0.5
+    set_input(pg, '#tear', '0.001')
+    assert 'clamped to its minimum 0.01' in note(pg) and pg.info()['params']['tear'] == 0.01
+    set_input(pg, '#tear', '')
+    assert pg.info()['params']['tear'] == 0 and pg.input_value('#tear') == ''
+
+
+def test_a_drag_faster_than_the_cloth_can_follow_is_not_called_unstable(open_page):
+    pg = open_page()
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps(
+        {'cols': 20, 'rows': 20, 'spacing': 0.05, 'pins': [0, 19], 'max_speed': 5, 'damping': 1}))
+    pg.js('clothApp.setPaused(true)')
+    st = pg.state()
+    x, y = st['screen'][19 * 20 + 10]
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    pg.mouse.move(x + 300, y + 200)
+    pg.js('clothApp.advance(3)')
+    pg.mouse.up()
+    assert 'A very fast drag' in note(pg) and 'Unstable' not in note(pg), note(pg)
+
+
 # ---- 2: one size limit for everything the page loads ---------------------------------------
 
 BEYOND = [
@@ -356,6 +391,20 @@ def test_the_help_is_modal(open_page):
     pg.keyboard.press('?')
     pg.keyboard.press('Escape')
     assert pg.locator('#help').is_hidden()
+
+
+@pytest.mark.parametrize('size', [(360, 640), (800, 400)])
+def test_the_help_opens_at_its_title_on_a_small_screen(open_page, size):
+    # Focus goes to Close, at the end of a card that scrolls on a small screen: focus()
+    # scrolled the card to its last lines, the title and the keys out of view.
+    pg = open_page(viewport={'width': size[0], 'height': size[1]}, has_touch=size[0] < 400)
+    pg.keyboard.press('h')
+    assert pg.js('document.activeElement.id') == 'help-close'
+    assert pg.js("document.querySelector('#help .card').scrollTop") == 0
+    title = pg.js("""() => { const c = document.querySelector('#help .card').getBoundingClientRect();
+        const t = document.querySelector('#help h2').getBoundingClientRect();
+        return t.top >= c.top && t.bottom <= c.bottom; }""")
+    assert title
 
 
 def test_a_key_right_after_closing_an_overlay_is_a_shortcut(open_page):

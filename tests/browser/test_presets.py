@@ -27,13 +27,22 @@ def test_presets_damp_like_air_and_two_corners_hangs_slack(open_page):
     pg = open_page('?preset=corners&paused=1')
     scene = json.loads(pg.info()['scene'])
     assert scene['damping'] == 1
-    pg.js('clothApp.advance(1)')
-    pos = pg.state()['positions']
     cols = scene['cols']
     width = (cols - 1) * scene['spacing']
+    # the corner is carried in over a second, gently: nothing flung, nothing over the pins
+    fastest, highest = 0.0, -1.0
+    last = pg.state()['positions']
+    for _ in range(120):
+        pg.js('clothApp.advance(1)')
+        pos = pg.state()['positions']
+        fastest = max(fastest, max(((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5 * 60
+                                   for a, b in zip(pos, last)))
+        highest = max(highest, max(p[1] for p in pos))
+        last = pos
     assert abs(pos[cols - 1][0] - 0.8 * width) < 1e-12 and pos[cols - 1][1] == 0
     assert pg.state()['pinned'][cols - 1]
-    pg.js('clothApp.advance(600)')
+    assert fastest < 3.0 and highest < 0.01 * width, (fastest, highest)
+    pg.js('clothApp.advance(480)')
     top = pg.state()['positions'][cols // 2]
     assert top[1] < -0.1 * width          # the top row sags in the middle
 

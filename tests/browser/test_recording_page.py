@@ -386,6 +386,18 @@ def test_a_broken_or_truncated_link_says_so_and_shows_the_default(open_page):
         info = other.info()
         assert words in info['error'] and 'link could not be opened' in info['error'], info['error']
         assert info['preset'] == 'curtain'
+        assert 'showing the Curtain preset' in info['error'], info['error']
+    # the URL's preset, named; a bad link pasted over a person's own scene leaves it running
+    other = open_page('?preset=chain#scene=@@@')
+    wait_until(other, '!clothApp.info().linkPending')
+    info = other.info()
+    assert info['preset'] == 'chain' and 'showing the Chain preset' in info['error'], info['error']
+    load_small(other)
+    before = other.info()['scene']
+    other.js("location.hash = '#scene=%%%'")
+    wait_until(other, "clothApp.info().error.indexOf('link') >= 0 && !clothApp.info().linkPending")
+    info = other.info()
+    assert info['scene'] == before and 'the scene shown runs on' in info['error'], info['error']
 
 
 def test_an_over_long_link_offers_the_file(open_page):
