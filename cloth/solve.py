@@ -199,13 +199,34 @@ def project_cells(pos, inv_mass, cols, rows, strength, intact, cell_ok):
     Not all of the defect at once: pins a person sets or drags can ask for cells no
     parallelogram grid can take (two pinned neighbours dragged onto one point), and a hard
     constraint would then fight the edges for good (measured: a cloth that never came to
-    rest); a partial pull gives way to them."""
-    for r in range(rows - 1):
-        base = r * cols
-        for c in range(cols - 1):
-            if not intact and cell_ok[base - r + c] == 0:
+    rest); a partial pull gives way to them.
+
+    Order: the cells of row r, column c in waves t = c + 2 r, each wave's cells by row. A cell
+    shares corners only with the eight around it, and those of the row-major order before it,
+    (r-1, c-1..c+1) and (r, c-1), are in earlier waves (t-3..t-1), the later ones in later
+    waves, while the cells of one wave share none: so each corner sees the same updates in the
+    same order as row by row, and the result is the same to the bit. But consecutive cells no
+    longer wait for each other: row by row each cell read the corners its predecessor had just
+    written, a chain through two divisions (measured on the settled 60x60 corners in node:
+    0.30 -> 0.22 ms a frame)."""
+    if rows < 2 or cols < 2:
+        return
+    last_c = cols - 2
+    last_r = rows - 2
+    for t in range(last_c + last_r + last_r + 1):
+        r = 0
+        if t > last_c:
+            r = (t - last_c + 1) >> 1
+        r_end = t >> 1
+        if r_end > last_r:
+            r_end = last_r
+        while r <= r_end:
+            c = t - r - r
+            a = r * cols + c
+            cell = a - r
+            r += 1
+            if not intact and cell_ok[cell] == 0:
                 continue    # a cell with a broken side is no longer a cell
-            a = base + c
             b = a + 1
             d = a + cols
             e = d + 1
