@@ -286,9 +286,43 @@ def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, n
     # Newton converges quadratically: from a largest error e one step leaves about e^2 / rest,
     # which is within the tolerance once e is within sqrt(tolerance).
     once = sqrt(tolerance) * rest
+    # A link whose squared length lies within [lo2, hi2] is within the tolerance for certain
+    # (the margins of 1e-9 are far wider than the rounding of sqrt and of the bounds), so a line
+    # whose links all do is left alone at the cost of a pass of multiplications, not the
+    # elimination's four divisions and a square root a link; a link outside them is measured
+    # as the elimination measures it. The decision is exactly the elimination's. (Settled
+    # 60x60 corners: most columns' second Newton step finds them within the tolerance; the
+    # line solves 1.84 -> 1.44 ms a frame in node.)
+    hi = rest + tol
+    hi2 = hi * hi * (1.0 - 1e-9)
+    lo = rest - tol
+    lo2 = -1.0
+    if lo > 0.0:
+        lo2 = lo * lo * (1.0 + 1e-9)
     for l in range(lines):
         start = first + l * line_step
         for it in range(newton):
+            a = start
+            wa = inv_mass[a]
+            within = True
+            for i in range(links):
+                b = a + stride
+                wb = inv_mass[b]
+                if wa + wb > 0.0 and (intact or link_ok[a] == 1):
+                    ia = a + a
+                    ib = b + b
+                    dx = pos[ib] - pos[ia]
+                    dy = pos[ib + 1] - pos[ia + 1]
+                    d2 = dx * dx + dy * dy
+                    if d2 > hi2 or d2 < lo2:
+                        length = sqrt(d2)
+                        if length >= 1e-15 and (length - rest > tol or rest - length > tol):
+                            within = False
+                            break
+                a = b
+                wa = wb
+            if within:
+                break
             a = start
             wa = inv_mass[a]
             worst = 0.0
