@@ -13,7 +13,7 @@ import math
 
 from cloth.host import f64, i32
 from cloth.scene import SceneError
-from cloth.solve import integrate, sweep_jakobsen, sweep_xpbd, project_tethers, project_cells, \
+from cloth.solve import integrate, sweep_jakobsen, sweep_xpbd, project_cells, \
     solve_lines, relieve, relieve_cells, clear, max_motion2, copy_into, mark_crossed, \
     mark_overstretched, N_CONSTS, K_SPACING, K_TOLERANCE, K_ALPHA, K_STRETCH, K_KEEP, K_AX, \
     K_AY, K_MAX_STEP, K_TEAR2
@@ -368,16 +368,18 @@ def step(cloth):
             if moved == 0:
                 break
     cloth.relieve_pending = False
-    cloth.clamped += integrate(pos, cloth.prev, inv_mass, n, cloth.consts)
+    # Long-range structure first, once per step: tethers take out the stretch between the pins
+    # and what hangs from them (inside integrate, each vertex's right after its Verlet step),
+    # and the cells are kept parallelograms (no folded cells). The sweeps that follow then
+    # measure, and fix, only what is left.
+    tethered = cloth.use_tethers and cloth.iterations > 0
+    cloth.clamped += integrate(pos, cloth.prev, inv_mass, n, cloth.consts, cloth.anchor,
+                               cloth.tether, tethered)
     if cloth.use_xpbd:
         clear(cloth.lam, m)
     if cloth.iterations == 0:
         return
-    # Long-range structure first, once per step: tethers take out the stretch between the pins
-    # and what hangs from them, and the cells are kept parallelograms (no folded cells). The
-    # sweeps that follow then measure, and fix, only what is left.
-    if cloth.use_tethers:
-        project_tethers(pos, cloth.prev, inv_mass, cloth.anchor, cloth.tether, n, cloth.consts)
+    if tethered:
         cloth.projections += n
     # Cells only while the cloth moves: one that converged last step is near its rest shape,
     # and a cloth at rest spends its step on one sweep (curtain 120x120: 25% fewer projections).

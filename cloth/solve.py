@@ -32,21 +32,38 @@ N_CONSTS = 9
 TINY2 = 1e-30
 
 
-def integrate(pos, prev, inv_mass, n, consts):
-    """Position Verlet, x' = x + (x - x*) * keep + a h^2, for every free vertex; returns how
-    many vertices had their speed clamped.
+def integrate(pos, prev, inv_mass, n, consts, anchor, tether, tethered):
+    """Position Verlet, x' = x + (x - x*) * keep + a h^2, for every free vertex, and when
+    `tethered` its tether's projection right after it (below); returns how many vertices had
+    their speed clamped.
 
     keep = 1 / (1 + damping h): the velocity (x - x*) / h loses damping * h of itself per step,
     in a form that stays in (0, 1] for any damping and step (exp would not be bit-exact).
     max_step = max_speed * h is a safety net, not physics: with one or two sweeps an undamped
     cloth can pump energy without bound (a 60x60 cloth on one pin reaches 1e9 m/s, then NaN).
-    Speeds above max_speed are scaled down to it; below it the step is exactly the seed's."""
+    Speeds above max_speed are scaled down to it; below it the step is exactly the seed's.
+
+    One pass for both because a vertex's tether reads only the vertex and its anchor, a fixed
+    vertex, which neither moves: every vertex sees the same operations as with a pass of
+    Verlet and then one of tethers, and positions are the same to the bit.
+
+    Tethers, long-range attachments (Kim, Chentanez, Mueller 2012), one-sided: a free vertex
+    may be no farther from its anchor (the nearest fixed vertex along the cloth) than the
+    length of the shortest path between them over the edges (tethers.find_anchors). One
+    projection per vertex removes the low-frequency stretch that Gauss-Seidel sweeps take
+    O(N^2) passes to remove. Like sweep_xpbd, the vertex moves along the anchor-to-vertex
+    direction at the start of the step (one Newton step on |d|^2 = limit^2, no sqrt), so
+    that a tether that is also an edge (a pendulum) keeps its energy; far from the limit or
+    after a sharp turn it is projected along d onto the exact distance instead.
+    consts[K_STRETCH] (>= 1) scales every limit while a hand pulls the cloth beyond its reach
+    (tethers.over_reach)."""
     sqrt = math.sqrt
     keep = consts[K_KEEP]
     ax = consts[K_AX]
     ay = consts[K_AY]
     max_step = consts[K_MAX_STEP]
     max_step2 = max_step * max_step
+    stretch = consts[K_STRETCH]
     clamped = 0
     for k in range(n):
         if inv_mass[k] == 0.0:
@@ -62,10 +79,38 @@ def integrate(pos, prev, inv_mass, n, consts):
             vx = vx * s
             vy = vy * s
             clamped += 1
-        pos[i] = x + vx + ax
-        pos[i + 1] = y + vy + ay
+        px = x + vx + ax
+        py = y + vy + ay
+        pos[i] = px
+        pos[i + 1] = py
         prev[i] = x
         prev[i + 1] = y
+        if not tethered:
+            continue
+        c = anchor[k]
+        if c < 0:
+            continue
+        # The tether (see above).
+        j = c + c
+        dx = px - pos[j]
+        dy = py - pos[j + 1]
+        d2 = dx * dx + dy * dy
+        limit = tether[k] * stretch
+        limit2 = limit * limit
+        if d2 <= limit2:
+            continue
+        ox = x - prev[j]
+        oy = y - prev[j + 1]
+        dot = dx * ox + dy * oy
+        if dot * dot > 0.81 * d2 * (ox * ox + oy * oy) and dot > 0.0 and d2 < 1.21 * limit2:
+            s = 0.5 * (d2 - limit2) / dot
+            pos[i] = px - ox * s
+            pos[i + 1] = py - oy * s
+        else:
+            d = sqrt(d2)
+            s = (d - limit) / d
+            pos[i] = px - dx * s
+            pos[i + 1] = py - dy * s
     return clamped
 
 
@@ -451,46 +496,6 @@ def mark_overstretched(pos, edge_a, edge_b, rest, m, consts, most, best_q, best_
     for i in range(found):
         rest[best_e[i]] = -1.0
     return found
-
-
-def project_tethers(pos, prev, inv_mass, anchor, tether, n, consts):
-    """Long-range attachments (Kim, Chentanez, Mueller 2012), one-sided: a free vertex may be no
-    farther from its anchor (the nearest fixed vertex along the cloth) than the length of the
-    shortest path between them over the edges (tethers.find_anchors). One projection per
-    vertex removes the low-frequency stretch that Gauss-Seidel sweeps take O(N^2) passes to
-    remove. Like sweep_xpbd, the vertex moves along the
-    anchor-to-vertex direction at the start of the step (one Newton step on |d|^2 = limit^2, no
-    sqrt), so that a tether that is also an edge (a pendulum) keeps its energy; far from the
-    limit or after a sharp turn it is projected along d onto the exact distance instead.
-    consts[K_STRETCH] (>= 1) scales every limit while a hand pulls the cloth beyond its reach
-    (tethers.over_reach)."""
-    sqrt = math.sqrt
-    stretch = consts[K_STRETCH]
-    for k in range(n):
-        c = anchor[k]
-        if c < 0 or inv_mass[k] == 0.0:
-            continue
-        i = k + k
-        j = c + c
-        dx = pos[i] - pos[j]
-        dy = pos[i + 1] - pos[j + 1]
-        d2 = dx * dx + dy * dy
-        limit = tether[k] * stretch
-        limit2 = limit * limit
-        if d2 <= limit2:
-            continue
-        ox = prev[i] - prev[j]
-        oy = prev[i + 1] - prev[j + 1]
-        dot = dx * ox + dy * oy
-        if dot * dot > 0.81 * d2 * (ox * ox + oy * oy) and dot > 0.0 and d2 < 1.21 * limit2:
-            s = 0.5 * (d2 - limit2) / dot
-            pos[i] -= ox * s
-            pos[i + 1] -= oy * s
-        else:
-            d = sqrt(d2)
-            s = (d - limit) / d
-            pos[i] -= dx * s
-            pos[i + 1] -= dy * s
 
 
 def relieve(pos, prev, inv_mass, edge_a, edge_b, rest, m, anchor, tether, n, stretch, slack):
