@@ -371,6 +371,13 @@ def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, n
             a = start
             wa = inv_mass[a]
             worst = 0.0
+            # The previous link's direction, 1 / den and rhs / den, carried in locals: the
+            # elimination is a chain from link to link, and a value read back from the arrays it
+            # was just stored in would lengthen it by a store-to-load round trip.
+            pux = 0.0
+            puy = 0.0
+            pcc = 0.0
+            pcd = 0.0
             for i in range(links):
                 b = a + stride
                 wb = inv_mass[b]
@@ -397,17 +404,22 @@ def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, n
                 if i > 0:
                     # cc[i - 1] holds 1 / den of the previous link until its super-diagonal,
                     # this link's sub-diagonal, is known.
-                    sub = -wa * (nx[i - 1] * ux + ny[i - 1] * uy)
-                    cc[i - 1] = sub * cc[i - 1]
-                    den -= sub * cc[i - 1]
-                    rhs -= sub * cd[i - 1]
+                    sub = -wa * (pux * ux + puy * uy)
+                    pcc = sub * pcc
+                    cc[i - 1] = pcc
+                    den -= sub * pcc
+                    rhs -= sub * pcd
                 if den <= 1e-12:
                     # A link between two fixed nodes: nothing to move (dl = 0).
-                    cc[i] = 0.0
-                    cd[i] = 0.0
+                    pcc = 0.0
+                    pcd = 0.0
                 else:
-                    cc[i] = 1.0 / den
-                    cd[i] = rhs / den
+                    pcc = 1.0 / den
+                    pcd = rhs / den
+                cc[i] = pcc
+                cd[i] = pcd
+                pux = ux
+                puy = uy
                 a = b
                 wa = wb
             if worst <= tol:
@@ -425,10 +437,12 @@ def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, n
                 sb = inv_mass[b] * dl
                 ia = a + a
                 ib = b + b
-                pos[ia] += nx[i] * sa
-                pos[ia + 1] += ny[i] * sa
-                pos[ib] -= nx[i] * sb
-                pos[ib + 1] -= ny[i] * sb
+                ux = nx[i]
+                uy = ny[i]
+                pos[ia] += ux * sa
+                pos[ia + 1] += uy * sa
+                pos[ib] -= ux * sb
+                pos[ib + 1] -= uy * sb
                 b = a
                 i -= 1
             if worst <= once:
