@@ -197,6 +197,10 @@ class Cloth:
         self.sweep_a = i32(m)
         self.sweep_b = i32(m)
         self.sweep_rest = f64(m)
+        # order_sweep's work arrays, made once: edges only go, so these sizes always suffice.
+        self.sweep_ready = i32(self.n_verts)
+        self.sweep_wave = i32(m if m > 0 else 1)
+        self.sweep_start = i32(m + 2)
         order_sweep(self)
 
     def set_edge(self, e, a, b, rest):
@@ -280,8 +284,10 @@ def order_sweep(cloth):
     m = cloth.n_edges
     edge_a = cloth.edge_a
     edge_b = cloth.edge_b
-    ready = i32(n)      # the first wave an edge at vertex k may go in
-    wave = i32(m if m > 0 else 1)
+    ready = cloth.sweep_ready      # the first wave an edge at vertex k may go in
+    wave = cloth.sweep_wave
+    for k in range(n):
+        ready[k] = 0
     waves = 0
     for e in range(m):
         a = edge_a[e]
@@ -294,7 +300,9 @@ def order_sweep(cloth):
         ready[b] = w + 1
         if w + 1 > waves:
             waves = w + 1
-    start = i32(waves + 1)
+    start = cloth.sweep_start   # waves <= m
+    for w in range(waves + 1):
+        start[w] = 0
     for e in range(m):
         start[wave[e] + 1] += 1
     for w in range(waves):
