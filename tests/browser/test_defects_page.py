@@ -468,12 +468,14 @@ def test_the_held_vertex_stays_under_the_pointer_through_a_resize(open_page):
 # ---- 11: catch-up within a time budget -------------------------------------------------------
 
 def test_catch_up_stops_at_the_frame_budget(open_page):
-    """A frame of 120x120 seed at 40 sweeps takes tens of ms: one animation frame runs one of
-    them, not four, so input waits for one frame at most, and the readout says slow motion."""
+    """A frame of 120x120 seed at 100 sweeps takes tens of ms: one animation frame runs one of
+    them, not four, so input waits for one frame at most, and the readout says slow motion.
+    (At 40 sweeps a frame took 12-14 ms on a faster machine: one under the 12 ms budget let a
+    second run, as it should; the scene must be well over the budget to test the cap.)"""
     pg = open_page()
     pg.js('(t) => clothApp.loadScene(t)', json.dumps(
         {'cols': 120, 'rows': 120, 'spacing': 0.01, 'pins': [0, 119], 'solver': 'jakobsen',
-         'iterations': 40}))
+         'iterations': 100}))
     pg.wait_for_timeout(300)
     per_tick = pg.js('''() => new Promise((done) => {
         const counts = []; let last = clothApp.info().frames, n = 0, ms = clothApp.info();
@@ -484,9 +486,9 @@ def test_catch_up_stops_at_the_frame_budget(open_page):
         requestAnimationFrame(tick);
       })''')
     sim_ms = pg.js("parseFloat(document.getElementById('r-sim').textContent)")
-    if sim_ms > 12:                       # the budget is 12 ms: more than one frame's worth
-        assert max(per_tick) <= 1, (per_tick, sim_ms)
-        pg.wait_for_function('() => document.getElementById("r-size").textContent.includes("slow motion")')
+    assert sim_ms > 24, sim_ms            # the budget is 12 ms: twice over it, every frame
+    assert max(per_tick) <= 1, (per_tick, sim_ms)
+    pg.wait_for_function('() => document.getElementById("r-size").textContent.includes("slow motion")')
 
 
 # ---- 12: a grab keeps its offset -------------------------------------------------------------
