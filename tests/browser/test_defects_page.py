@@ -92,11 +92,12 @@ BEYOND = [
 def test_a_scene_beyond_the_page_limits_is_refused_at_once(open_page):
     pg = open_page()
     for scene in BEYOND:
-        took = pg.js('(t) => { const t0 = performance.now(); try { clothApp.loadScene(t); } catch (e) {}'
-                     ' return performance.now() - t0; }', json.dumps(scene))
+        pg.js('(t) => { try { clothApp.loadScene(t); } catch (e) {} }', json.dumps(scene))
         info = pg.info()
+        # refused by the page's limits (scenes.pageLimit), checked before anything is built
         assert info['preset'] == 'curtain' and 'page' in info['error'], (scene, info['error'])
-        assert took < 2000, took     # generous: refused before any array is made
+        assert 'the page runs at most' in info['error'] or 'the page takes at most' in info['error'], \
+            info['error']
     # the page still answers
     pg.keyboard.press('Space')
     assert pg.info()['paused']
