@@ -359,10 +359,7 @@
   function setCharts(on) {
     document.getElementById('charts').hidden = !on;
     if (on) charts.draw();
-    layout();
-    input.reproject();   // a held vertex stays under its pointer as the view moves
-    measureOverlays();
-    s.dirty = true;
+    relayout();
   }
 
   // Keys that leave the grid as it is apply to the running cloth (core.setSettings): its
@@ -876,8 +873,14 @@
 
   function resized(w, h, devW, devH) {
     renderer.resize(w, h, devW, devH);
+    relayout();
+  }
+
+  // The views laid out again (a resize, the charts shown or hidden): a held vertex stays under
+  // its pointer, and the overlays' and the canvas's boxes are measured anew.
+  function relayout() {
     layout();
-    input.reproject();   // a held vertex stays under its pointer through the resize
+    input.reproject();
     measureOverlays();
     measureCanvas();
     s.dirty = true;
