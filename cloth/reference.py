@@ -47,3 +47,85 @@ def slack_hang(cols, rows, spacing, span):
 
 def rest_grid(cols, rows, spacing):
     return [(c * spacing, -r * spacing) for r in range(rows) for c in range(cols)]
+
+
+# ---- a material of finite stiffness ---------------------------------------------------------
+#
+# A compliant edge (compliance a, m/N) carrying a tension T is T a longer than its rest length:
+# its strain is T a / h. In a grid of structural edges a vertex of mass m stands for a cell of
+# cloth (m = density h^2), so the strain of a column link that carries k vertices is
+# k m g a / h = density g a (k h): the same at every resolution for the same length of cloth.
+
+
+def hanging_column_strains(rows, spacing, mass, compliance, g=9.81):
+    """Strains of the rows - 1 links of a column hung from its top vertex, top first: the link
+    below row r carries the rows - 1 - r vertices under it."""
+    return [(rows - 1 - r) * mass * g * compliance / spacing for r in range(rows - 1)]
+
+
+def hanging_column(rows, spacing, mass, compliance, g=9.81):
+    """[(0, y)] of the column's vertices from its pin at (0, 0): each link its stretched length."""
+    pts = [(0.0, 0.0)]
+    for strain in hanging_column_strains(rows, spacing, mass, compliance, g):
+        pts.append((0.0, pts[-1][1] - spacing * (1 + strain)))
+    return pts
+
+
+def elastic_chain(n_links, link, span, node_weight, compliance):
+    """A chain of n equal links (rest length `link`, compliance a) whose n - 1 inner joints each
+    carry `node_weight` (N), hung between (0, 0) and (span, 0). Returns (points, tensions):
+    the n + 1 joints and the n links' tensions. Statics: the horizontal tension H is the same in
+    every link and the vertical one drops by node_weight at each joint, V_k = node_weight
+    ((n - 1) / 2 - k) for link k (from 0); link k is (H, -V_k) / T_k long link + a T_k, so H
+    solves sum (link + a T_k) H / T_k = span (bisection: the sum grows with H). With a = 0 this
+    is `discrete_chain`."""
+    def links(H):
+        out = []
+        for k in range(n_links):
+            V = node_weight * ((n_links - 1) / 2 - k)
+            T = math.sqrt(H * H + V * V)
+            out.append((H, V, T, link + compliance * T))
+        return out
+
+    def width(H):
+        return sum(L * Hh / T for Hh, V, T, L in links(H))
+
+    if n_links * link <= span:
+        raise ValueError('elastic_chain: a chain that reaches the span is taut (no sag to solve)')
+    lo, hi = 0.0, node_weight * n_links + 1.0
+    while width(hi) < span:
+        hi *= 2
+    for _ in range(200):
+        mid = (lo + hi) / 2
+        if width(mid) < span:
+            lo = mid
+        else:
+            hi = mid
+    pts = [(0.0, 0.0)]
+    tensions = []
+    for Hh, V, T, L in links((lo + hi) / 2):
+        x, y = pts[-1]
+        pts.append((x + L * Hh / T, y - L * V / T))
+        tensions.append(T)
+    return pts, tensions
+
+
+def elastic_two_corners(cols, rows, spacing, mass, compliance, span, g=9.81):
+    """A grid of compliant structural edges hung from its two top corners `span` apart
+    (vertex k = r * cols + c). Returns (positions, down_strains, right_strains): down_strains
+    [r][c] for the link below (r, c), right_strains [r][c] for the link to its right.
+
+    Every column hangs straight down from its top vertex, each link carrying the vertices below
+    it (as `hanging_column`); the top row is an elastic chain whose inner joints each carry a
+    whole column (rows vertices); every lower row is the top row moved down by the same column
+    stretch, so its links keep their rest length and carry nothing. Each vertex is then in
+    balance: a lower one between its two column links, which differ by its weight, and a top one
+    between its two row links and its column."""
+    top, tensions = elastic_chain(cols - 1, spacing, span, rows * mass * g, compliance)
+    column = hanging_column(rows, spacing, mass, compliance, g)
+    col_strains = hanging_column_strains(rows, spacing, mass, compliance, g)
+    positions = [(top[c][0], top[c][1] + column[r][1]) for r in range(rows) for c in range(cols)]
+    down = [[col_strains[r] for c in range(cols)] for r in range(rows - 1)]
+    right = [[(compliance * tensions[c] / spacing if r == 0 else 0.0) for c in range(cols - 1)]
+             for r in range(rows)]
+    return positions, down, right

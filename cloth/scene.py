@@ -28,12 +28,13 @@ OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut']
 
 SCENE_KEYS = ['cols', 'rows', 'spacing', 'pins', 'gravity', 'dt', 'substeps', 'iterations',
               'damping', 'solver', 'actions', 'tethers', 'shear', 'compliance', 'tolerance',
-              'max_speed', 'sleep', 'cells', 'lines', 'name', 'frames', 'compare', 'tear']
+              'max_speed', 'sleep', 'cells', 'lines', 'name', 'frames', 'compare', 'tear',
+              'density']
 ACTION_KEYS = ['frame', 'op', 'vertex', 'to', 'scene', 'from']
 # The keys a `set` action may change on the running cloth: everything but what makes the grid
 # (cols, rows, spacing, shear, pins) and what is not physics (actions, frames, name).
 SETTABLE = ['gravity', 'dt', 'substeps', 'iterations', 'damping', 'solver', 'tethers',
-            'compliance', 'tolerance', 'max_speed', 'sleep', 'cells', 'lines', 'tear']
+            'compliance', 'tolerance', 'max_speed', 'sleep', 'cells', 'lines', 'tear', 'density']
 # What the settings of a `set` are merged into: the scene's own keys but these, which a set
 # can neither change nor needs (actions would be parsed again at every set).
 NOT_SETTINGS = ['actions', 'pins', 'frames', 'name', 'compare']
@@ -41,7 +42,7 @@ NOT_SETTINGS = ['actions', 'pins', 'frames', 'name', 'compare']
 # under the same hands, each with some of these keys of its own. The physics ignores it but
 # for the panel a run asks for (parse_scene's `panel`).
 COMPARE_KEYS = ['solver', 'substeps', 'iterations', 'tethers', 'tolerance', 'compliance',
-                'shear', 'damping', 'cells', 'lines', 'sleep', 'max_speed', 'tear']
+                'shear', 'damping', 'cells', 'lines', 'sleep', 'max_speed', 'tear', 'density']
 MAX_TEAR = 1e6
 MAX_PANELS = 4
 
@@ -111,6 +112,7 @@ class Scene:
         self.cells = False
         self.lines = False
         self.tear = 0.0        # the strain past which an edge breaks; 0: no tearing
+        self.mass = 1.0        # kg a vertex: density * spacing^2, or 1 kg without a density
         self.actions = []      # list of Action, sorted by frame (stable)
         self.frames = -1       # the frames a recording ran for; -1: not given
         # The scene's JSON object without NOT_SETTINGS: what a `set` action merges its keys
@@ -295,6 +297,15 @@ def scene_from_object(obj):
     if has_key(obj, 'tolerance'):
         s.tolerance = number(obj['tolerance'], 'tolerance', 0.0, 1.0, False,
                              'from 0 to 1 (a relative strain)')
+    if has_key(obj, 'density'):
+        # kg/m^2: a vertex stands for a cell of spacing^2 of cloth. Without it every vertex
+        # weighs 1 kg, as before the key existed (the scenes and recordings made then mean
+        # what they meant).
+        density = number(obj['density'], 'density', 0.0, 1e4, True,
+                         'in (0, 10000] kg/m^2 (the cloth\'s mass per area)')
+        s.mass = density * s.spacing * s.spacing
+        if s.mass < 1e-12:
+            fail('density: density * spacing^2 (a vertex\'s mass) must be at least 1e-12 kg')
     if has_key(obj, 'name'):
         if kind_of(obj['name']) != 'string':
             fail('name: must be a string')

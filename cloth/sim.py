@@ -2,8 +2,10 @@
 
 State (struct of arrays, one per quantity; n vertices, m edges):
     pos, prev    2n doubles, x and y interleaved; velocity is (pos - prev) / h, never stored
-    inv_mass     n doubles; 0 for a pinned or held vertex (unit mass otherwise)
-    pinned, held n ints (0/1); a vertex is fixed while either is set
+    inv_mass     n doubles; 0 for a pinned vertex (and for one a hand moves where it is), the
+                 vertex's mass (density * spacing^2, or 1 kg) inverted otherwise
+    pinned, held n ints (0/1)
+    target       2n doubles: where the hand holding a vertex is (see HAND_FORCE)
     edge_a, edge_b, rest   m edges: structural grid edges, then the shear diagonals if the
                  scene declares them
 The core knows nothing of the DOM or GL: the page reads `pos`, `diff` and `stress`.
@@ -14,19 +16,11 @@ import math
 from cloth.host import f64, i32
 from cloth.scene import SceneError
 from cloth.solve import integrate, sweep_jakobsen, sweep_xpbd, project_cells, \
-    solve_lines, relieve, relieve_cells, clear, max_motion2, copy_into, mark_crossed, \
-    mark_overstretched, N_CONSTS, K_SPACING, K_TOLERANCE, K_ALPHA, K_STRETCH, K_KEEP, K_AX, \
-    K_AY, K_MAX_STEP, K_TEAR2
+    solve_lines, clear, max_motion2, copy_into, mark_crossed, \
+    mark_overstretched, drive_hands, hold_hands, limit_speed, follow_velocity, N_CONSTS, K_SPACING, K_TOLERANCE, K_ALPHA, \
+    K_STRETCH, K_KEEP, K_AX, K_AY, K_MAX_STEP, K_TEAR2, K_HAND_STEP, K_HAND_SHARE, K_HAND_PUSH
 from cloth.measure import deformation, nearest_vertex
 from cloth.tethers import find_anchors, list_fixed, over_reach, label_pieces
-
-# When a vertex is let go (released, unpinned), the next step first takes out, without making
-# velocity, the stretch beyond RELIEVE_SLACK that this reveals: passes of solve.relieve until
-# none is left, at most RELIEVE_PASSES. Only then: not when a vertex is fixed (relieving
-# there would take a hand's yank out of the cloth), and not every step (within a drag the
-# stretch at the hand is what carries its motion into the cloth).
-RELIEVE_SLACK = 0.005
-RELIEVE_PASSES = 16
 
 # While a hand pulls the cloth beyond its reach, the tethers stretch with it, up to this
 # factor (tethers.over_reach). Past it they hold the rest of the cloth near the pins: a vertex
@@ -54,11 +48,6 @@ LINE_NEWTON = 2
 # After the columns and rows, the top rows' column links and the top rows are solved once more:
 # rows // LINE_TOP_PER rows of them, at least one (see lines).
 LINE_TOP_PER = 15
-# ... except for LINE_TOP_WAIT seconds after a vertex is let go: the residual stretch a release
-# leaves (under RELIEVE_SLACK) is turned into speed the faster, the more exactly it is solved
-# (measured, 12x12 pulled 0.3 m beyond reach and let go: fastest vertex 6.7 m/s, 10.9 m/s with
-# the repeat; skipping it for the first 3 frames gives back 6.7).
-LINE_TOP_WAIT = 0.1
 
 # Tearing (scene key `tear`): checked once a frame, after its steps, and at most
 # TEAR_PER_FRAME edges break in a frame, the most strained first. Once a frame because the
@@ -67,6 +56,30 @@ LINE_TOP_WAIT = 0.1
 # spreads: a tear runs from where it starts, as cloth tears, instead of a whole row past the
 # limit snapping in one frame.
 TEAR_PER_FRAME = 4
+
+# A hand of finite strength. A held vertex that is not pinned (with "xpbd") is not put where
+# the pointer is: each step it moves toward it, at most HAND_SPEED, as part of the cloth (the
+# constraints that follow may pull it back), with a mass that makes the most it can pull
+# HAND_FORCE times the cloth's weight (at 9.81 m/s^2: a step of HAND_SPEED h against a pull F
+# is undone when F h^2 / mass = HAND_SPEED h). So the held vertex stops where the cloth can
+# reach instead of stretching an inextensible cloth beyond it (which stored stretch that a
+# release turned into a fling: 14.6 m/s after a 0.2 m pull of the Curtain preset), and a
+# compliant cloth stretches as far as that force takes it. A held pin is moved where the hand
+# is (a pin is fixed in space: dragging it moves the fixture), and so is every held vertex of
+# the seed's method.
+HAND_SPEED = 10.0
+HAND_FORCE = 2.0
+HAND_PUSH = 0.1
+HAND_RADIUS = 0.02
+
+# Letting go: for a while after a vertex is let go (released, unpinned), the cloth's motion
+# relative to its mean motion is slowed, all of it by one factor, wherever some vertex would
+# otherwise move faster than it did before (smoothed over the frames a hand held the cloth)
+# plus what gravity has added since, plus LET_GO_SLACK; until a frame needs no slowing. The
+# stretch a hand leaves in the cloth (a compliant one's, or what an inextensible one's solver
+# could not take out) then returns without being turned into a fling, while the cloth's own
+# motion (a throw: its momentum) stays.
+LET_GO_SLACK = 0.5
 
 
 class Cloth:
@@ -99,6 +112,23 @@ class Cloth:
         self.inv_mass = f64(n)
         self.pinned = i32(n)
         self.held = i32(n)
+        # The hands (HAND_FORCE): where each is, where it last put each vertex it holds, and
+        # how much farther it reaches to make up for a load.
+        self.target = f64(2 * n)
+        self.lead = f64(2 * n)
+        self.aim = f64(2 * n)
+        self.hands = i32(n)
+        self.n_hands = 0
+        # A hand's grip (regrip): the held vertex whose hand holds each vertex (-1: none), its
+        # offset from it, and how many each hand grips; work arrays to find a grip.
+        self.grip = i32(n)
+        self.offset = f64(2 * n)
+        self.grip_count = i32(n)
+        self.grip_list = i32(n)
+        self.grip_dist = f64(n)
+        for k in range(n):
+            self.grip[k] = -1
+            self.grip_dist[k] = -1.0
         for r in range(rows):
             for c in range(cols):
                 k = r * cols + c
@@ -107,7 +137,7 @@ class Cloth:
         for i in range(len(scene.pins)):
             self.pinned[scene.pins[i]] = 1
         for k in range(n):
-            self.inv_mass[k] = 0.0 if self.pinned[k] == 1 else 1.0
+            self.inv_mass[k] = 0.0 if self.pinned[k] == 1 else self.free_w
             rest_at(self, k)
 
         self.build_edges(scene.shear)
@@ -127,10 +157,16 @@ class Cloth:
         self.out = f64(1)
         self.tear_q = f64(TEAR_PER_FRAME)
         self.tear_e = i32(TEAR_PER_FRAME)
-        # Set when a vertex is let go: the next step starts with `relieve`.
-        self.relieve_pending = False
-        # Steps left before the top rows' line solves are repeated again (LINE_TOP_WAIT).
-        self.top_wait = 0
+        # Set when a vertex is let go: the steps from the next one on are limited
+        # (LET_GO_SLACK) until a frame needs no limit.
+        self.let_go_pending = False
+        self.let_go = False
+        self.let_go_frames = 0
+        self.let_go_limited = 0
+        self.let_go_t = 0.0
+        self.velocity = f64(2 * n)
+        self.frame_start = f64(2 * n)
+        self.hands_last_frame = False
         # The last step's first sweep found every edge within tolerance (see step).
         self.converged = False
         self.diff = f64(self.n_edges)
@@ -201,6 +237,10 @@ class Cloth:
         self.sweep_ready = i32(self.n_verts)
         self.sweep_wave = i32(m if m > 0 else 1)
         self.sweep_start = i32(m + 2)
+        # The sweep's slot of the grid link from k to its lower / right neighbour: the line
+        # solves of a compliant cloth share the sweep's multipliers (solve.solve_lines).
+        self.down_slot = i32(n)
+        self.right_slot = i32(n)
         order_sweep(self)
 
     def set_edge(self, e, a, b, rest):
@@ -313,6 +353,11 @@ def order_sweep(cloth):
         cloth.sweep_a[j] = edge_a[e]
         cloth.sweep_b[j] = edge_b[e]
         cloth.sweep_rest[j] = cloth.rest[e]
+        a = edge_a[e]
+        if edge_b[e] == a + cloth.cols:
+            cloth.down_slot[a] = j
+        elif edge_b[e] == a + 1:
+            cloth.right_slot[a] = j
 
 
 # ---- the step -----------------------------------------------------------------------------
@@ -328,17 +373,36 @@ def frame(cloth):
     if cloth.use_tethers:
         if cloth.anchors_stale:
             find_anchors(cloth.n_verts, cloth.adj_start, cloth.adj_vertex, cloth.adj_rest,
-                         cloth.inv_mass, cloth.anchor, cloth.tether)
+                         cloth.pinned, cloth.anchor, cloth.tether)
             cloth.n_fixed = list_fixed(cloth.inv_mass, cloth.n_verts, cloth.fixed)
             cloth.anchors_stale = False
         cloth.stretch = 1.0
-        if cloth.n_held > 0:
-            over_reach(cloth.pos, cloth.held, cloth.fixed, cloth.n_fixed, cloth.cols,
-                       cloth.consts, cloth.intact, cloth.piece, cloth.out)
+        if cloth.n_held > cloth.n_hands:
+            over_reach(cloth.pos, cloth.held, cloth.pinned, cloth.use_xpbd, cloth.fixed,
+                       cloth.n_fixed, cloth.cols, cloth.consts, cloth.intact, cloth.piece,
+                       cloth.out)
             cloth.stretch = min(MAX_STRETCH, cloth.out[0])
         cloth.consts[K_STRETCH] = cloth.stretch
+    # The let-go window closes after a frame that needed no limit.
+    if cloth.let_go and cloth.let_go_frames > 0 and cloth.let_go_limited == 0:
+        cloth.let_go = False
+    cloth.let_go_limited = 0
+    if cloth.let_go:
+        cloth.let_go_frames += 1
+    else:
+        cloth.let_go_frames = 0
+    if cloth.n_hands > 0 and not cloth.hands_last_frame:
+        clear(cloth.velocity, cloth.n_verts + cloth.n_verts)
+    cloth.hands_last_frame = cloth.n_hands > 0
+    if cloth.hands_last_frame:
+        copy_into(cloth.frame_start, cloth.pos, cloth.n_verts + cloth.n_verts)
     for s in range(cloth.substeps):
+        # A hand's motion over the frame is spread evenly over its steps.
+        cloth.consts[K_HAND_SHARE] = 1.0 / (cloth.substeps - s)
         step(cloth)
+    if cloth.hands_last_frame:
+        follow_velocity(cloth.pos, cloth.frame_start, cloth.n_verts, 1.0 / cloth.dt,
+                        cloth.velocity)
     # Tearing: a cloth whose last step converged has every edge within the tolerance, below
     # any tear limit at least as large, and costs nothing to check.
     if cloth.tear > 0.0 and not (cloth.converged and cloth.tolerance <= cloth.tear):
@@ -370,35 +434,50 @@ def settle(cloth):
 
 
 def step(cloth):
-    """One step of size h: predict by Verlet, then relax the constraints."""
+    """One step of size h: let go, predict, relax the constraints, limit what a let-go may
+    do."""
+    if cloth.let_go_pending:
+        cloth.let_go_pending = False
+        if cloth.use_xpbd:
+            start_let_go(cloth)
+    relax(cloth)
+    if cloth.n_hands > 0:
+        hold_hands(cloth.pos, cloth.hands, cloth.n_hands, cloth.lead, cloth.aim, cloth.consts)
+    if cloth.let_go:
+        cloth.let_go_t += cloth.h
+        limit_speed(cloth.pos, cloth.prev, cloth.inv_mass, cloth.n_verts, cloth.velocity,
+                    cloth.h, cloth.g_abs * cloth.let_go_t + LET_GO_SLACK, cloth.out)
+        if cloth.out[0] < 1.0:
+            cloth.let_go_limited += 1
+
+
+def start_let_go(cloth):
+    """The let-go window (LET_GO_SLACK) starts from each vertex's velocity before it: smoothed
+    over the frames a hand held the cloth (a throw; a hand at its strength's end steps forward
+    and is pulled back, which averages out), else the last step's."""
+    if not cloth.hands_last_frame:
+        clear(cloth.velocity, cloth.n_verts + cloth.n_verts)
+        follow_velocity(cloth.pos, cloth.prev, cloth.n_verts, 2.0 / cloth.h, cloth.velocity)
+    cloth.let_go = True
+    cloth.let_go_t = 0.0
+
+
+def relax(cloth):
+    """Predict by Verlet, then relax the constraints."""
     n = cloth.n_verts
     m = cloth.n_edges
     pos = cloth.pos
     inv_mass = cloth.inv_mass
-    # Stretch revealed by a change of the fixed set (a cloth pulled beyond its reach, let go)
-    # goes without becoming speed. Not for compliant edges: their stretch is the material's.
-    if cloth.relieve_pending:
-        cloth.top_wait = cloth.wait_steps
-    elif cloth.top_wait > 0:
-        cloth.top_wait -= 1
-    if cloth.relieve_pending and cloth.use_xpbd and cloth.alpha == 0.0:
-        for p in range(RELIEVE_PASSES):
-            moved = relieve(pos, cloth.prev, inv_mass, cloth.edge_a, cloth.edge_b, cloth.rest, m,
-                            cloth.anchor, cloth.tether, n if cloth.use_tethers else 0,
-                            cloth.stretch, RELIEVE_SLACK)
-            if cloth.use_cells:
-                moved += relieve_cells(pos, cloth.prev, inv_mass, cloth.cols, cloth.rows,
-                                       RELIEVE_SLACK * cloth.spacing, cloth.intact, cloth.cell_ok)
-            if moved == 0:
-                break
-    cloth.relieve_pending = False
     # Long-range structure first, once per step: tethers take out the stretch between the pins
     # and what hangs from them (inside integrate, each vertex's right after its Verlet step),
     # and the cells are kept parallelograms (no folded cells). The sweeps that follow then
     # measure, and fix, only what is left.
     tethered = cloth.use_tethers and cloth.iterations > 0
+    if cloth.n_hands > 0:
+        drive_hands(pos, cloth.prev, cloth.hands, cloth.n_hands, cloth.grip, cloth.offset,
+                    cloth.target, cloth.lead, cloth.aim, cloth.consts)
     cloth.clamped += integrate(pos, cloth.prev, inv_mass, n, cloth.consts, cloth.anchor,
-                               cloth.tether, tethered)
+                               cloth.tether, tethered, cloth.held)
     if cloth.use_xpbd:
         clear(cloth.lam, m)
     if cloth.iterations == 0:
@@ -451,21 +530,21 @@ def lines(cloth):
     if rows > 1:
         solve_lines(cloth.pos, cloth.inv_mass, 0, cols, rows, cols, 1, LINE_NEWTON, cloth.line_nx,
                     cloth.line_ny, cloth.line_cc, cloth.line_cd, cloth.intact, cloth.down_ok,
-                    cloth.consts)
+                    cloth.consts, cloth.lam, cloth.down_slot)
         cloth.projections += cols * (rows - 1)
     if cols > 1:
         solve_lines(cloth.pos, cloth.inv_mass, 0, 1, cols, rows, cols, LINE_NEWTON, cloth.line_nx,
                     cloth.line_ny, cloth.line_cc, cloth.line_cd, cloth.intact, cloth.right_ok,
-                    cloth.consts)
+                    cloth.consts, cloth.lam, cloth.right_slot)
         cloth.projections += rows * (cols - 1)
-    if top > 0 and cols > 1 and cloth.top_wait == 0:
+    if top > 0 and cols > 1:
         solve_lines(cloth.pos, cloth.inv_mass, 0, cols, top + 1, cols, 1, LINE_NEWTON,
                     cloth.line_nx, cloth.line_ny, cloth.line_cc, cloth.line_cd, cloth.intact,
-                    cloth.down_ok, cloth.consts)
+                    cloth.down_ok, cloth.consts, cloth.lam, cloth.down_slot)
         cloth.projections += cols * top
         solve_lines(cloth.pos, cloth.inv_mass, 0, 1, cols, top, cols, LINE_NEWTON, cloth.line_nx,
                     cloth.line_ny, cloth.line_cc, cloth.line_cd, cloth.intact, cloth.right_ok,
-                    cloth.consts)
+                    cloth.consts, cloth.lam, cloth.right_slot)
         cloth.projections += top * (cols - 1)
 
 
@@ -479,7 +558,6 @@ def configure(cloth, scene):
     cloth.substeps = scene.substeps
     cloth.iterations = scene.iterations
     cloth.h = scene.dt / scene.substeps
-    cloth.wait_steps = int(LINE_TOP_WAIT / cloth.h)
     h2 = cloth.h * cloth.h
     cloth.ax = scene.gravity_x * h2
     cloth.ay = scene.gravity_y * h2
@@ -488,16 +566,24 @@ def configure(cloth, scene):
     cloth.use_xpbd = scene.solver == 'xpbd'
     cloth.alpha = scene.compliance / h2
     cloth.tolerance = scene.tolerance
-    cloth.use_tethers = scene.tethers
+    # Tethers bound how far an inextensible cloth can reach from its pins; a compliant one
+    # reaches farther by its stretch, which rigid tethers would erase (measured: 2.5e-7 at the
+    # top of a hanging curtain whose exact strain is 8.3e-3). Its line solves carry the
+    # hanging stretch instead, exactly (solve.solve_lines).
+    cloth.use_tethers = scene.tethers and scene.compliance == 0.0
     cloth.use_cells = scene.cells and cloth.cols > 1 and cloth.rows > 1
-    # Line solves assume inextensible edges of one rest length (not compliant ones), and a
-    # step that moves a vertex little against its links: their linearisation of a taut,
-    # loaded line overshoots when gravity moves it more than LINE_STEP of the spacing in
-    # one step (measured: a taut cloth under 100 g, or with steps of 1/32 s, never came
-    # to rest with them; the benchmark's scenes move 0.25-0.5% per step).
+    # Line solves assume a step that moves a vertex little against its links: their
+    # linearisation of a taut, loaded, inextensible line overshoots when gravity moves it more
+    # than LINE_STEP of the spacing in one step (measured: a taut cloth under 100 g, or with
+    # steps of 1/32 s, never came to rest with them; the benchmark's scenes move 0.25-0.5% per
+    # step). A compliant line is a better conditioned system (alpha~ on its diagonal).
     fall = math.sqrt(cloth.ax * cloth.ax + cloth.ay * cloth.ay)
-    cloth.use_lines = (scene.lines and scene.compliance == 0.0 and
-                       fall <= LINE_STEP * cloth.spacing)
+    cloth.use_lines = scene.lines and (scene.compliance > 0.0 or fall <= LINE_STEP * cloth.spacing)
+    cloth.g_abs = math.sqrt(scene.gravity_x * scene.gravity_x + scene.gravity_y * scene.gravity_y)
+    # Masses: a free vertex's, and a hand's (HAND_FORCE), at this step size.
+    cloth.free_w = 1.0 / scene.mass
+    hand_force = HAND_FORCE * scene.mass * n * 9.81
+    cloth.hand_w = HAND_PUSH * cloth.spacing / (hand_force * h2)
     # Work arrays of the line solves (one line at a time), and the sleep test's two copies of
     # the positions (a frame ago, at the window's start): allocated when first needed.
     longest = max(cloth.cols, cloth.rows)
@@ -517,6 +603,8 @@ def configure(cloth, scene):
     k[K_AY] = cloth.ay
     k[K_MAX_STEP] = cloth.max_step
     k[K_TEAR2] = (1.0 + scene.tear) * (1.0 + scene.tear)
+    k[K_HAND_STEP] = HAND_SPEED * cloth.h
+    k[K_HAND_PUSH] = HAND_PUSH * cloth.spacing
     cloth.use_sleep = scene.sleep
     extent = max(longest - 1, 1) * cloth.spacing
     cloth.still_motion2 = SLEEP_MOTION * SLEEP_MOTION * extent * extent
@@ -544,6 +632,13 @@ def retune(cloth, scene):
         prev = cloth.prev
         for i in range(2 * cloth.n_verts):
             prev[i] = pos[i] - (pos[i] - prev[i]) * f
+    # A new density or step size changes the masses; a new solver, which held vertices are
+    # hands.
+    for k in range(cloth.n_verts):
+        if cloth.held[k] == 1:
+            regrip(cloth, k)
+    for k in range(cloth.n_verts):
+        set_mass(cloth, k)
     cloth.anchors_stale = True
     cloth.converged = False
     cloth.asleep = False
@@ -678,38 +773,131 @@ def rest_at(cloth, k):
 
 
 def refresh(cloth, k):
-    """inv_mass follows pinned and held; the tether anchors follow the fixed set."""
+    """inv_mass follows pinned and held, the hands' grips follow the held vertices, the tether
+    anchors the fixed set; a vertex that changes state starts from rest."""
     cloth.asleep = False
     cloth.still_frames = 0
-    fixed = cloth.pinned[k] == 1 or cloth.held[k] == 1
     was_fixed = cloth.inv_mass[k] == 0.0
-    cloth.inv_mass[k] = 0.0 if fixed else 1.0
-    if fixed != was_fixed:
+    regrip(cloth, k)
+    set_mass(cloth, k)
+    if was_fixed != (cloth.inv_mass[k] == 0.0):
         cloth.anchors_stale = True
-    if was_fixed and not fixed:
-        cloth.relieve_pending = True
     rest_at(cloth, k)
 
 
+def set_mass(cloth, k):
+    """inv_mass[k]: 0 for a pin and for a vertex moved where the hand is; for a vertex in a
+    hand of finite strength's grip, that hand's mass shared among its grip (HAND_FORCE); the
+    vertex's own otherwise."""
+    if cloth.pinned[k] == 1 or (cloth.held[k] == 1 and not cloth.use_xpbd):
+        cloth.inv_mass[k] = 0.0
+    elif cloth.grip[k] >= 0:
+        cloth.inv_mass[k] = cloth.hand_w * cloth.grip_count[cloth.grip[k]]
+    else:
+        cloth.inv_mass[k] = cloth.free_w
+
+
+def regrip(cloth, k):
+    """Held vertex k's grip after a change of state: a hand of finite strength (with "xpbd", k
+    not pinned) grips k and the free vertices within HAND_RADIUS of it along the cloth (a
+    pinch holds a patch of cloth, not a point: a point load strains a grid's edges as
+    1 / spacing, a patch's do not depend on it), each held at its offset from k; otherwise
+    nothing. Then the masses of whatever the change moved in or out of a grip, and the list of
+    the hands' vertices."""
+    if cloth.grip[k] == k:
+        for m in range(cloth.n_verts):
+            if cloth.grip[m] == k:
+                cloth.grip[m] = -1
+                set_mass(cloth, m)
+    elif cloth.grip[k] >= 0:
+        # k was gripped by another hand: it leaves that grip (grabbed, or pinned).
+        other = cloth.grip[k]
+        cloth.grip[k] = -1
+        cloth.grip_count[other] -= 1
+        for m in range(cloth.n_verts):
+            if cloth.grip[m] == other:
+                set_mass(cloth, m)
+    if cloth.held[k] == 1 and cloth.pinned[k] == 0 and cloth.use_xpbd:
+        count = gather_grip(cloth, k)
+        cloth.grip_count[k] = count
+        for j in range(count):
+            m = cloth.grip_list[j]
+            set_mass(cloth, m)
+    count = 0
+    for m in range(cloth.n_verts):
+        if cloth.grip[m] >= 0:
+            cloth.hands[count] = m
+            count += 1
+    cloth.n_hands = count
+
+
+def gather_grip(cloth, k):
+    """Grip k and the free, unheld vertices within HAND_RADIUS of it along the edges (shortest
+    paths, so a grip never reaches across a cut); returns how many, listed in grip_list."""
+    dist = cloth.grip_dist
+    found = cloth.grip_list
+    dist[k] = 0.0
+    found[0] = k
+    count = 1
+    i = 0
+    while i < count:
+        v = found[i]
+        i += 1
+        for q in range(cloth.adj_start[v], cloth.adj_start[v + 1]):
+            u = cloth.adj_vertex[q]
+            d = dist[v] + cloth.adj_rest[q]
+            if d <= HAND_RADIUS and (dist[u] < 0.0 or d < dist[u]):
+                if dist[u] < 0.0:
+                    found[count] = u
+                    count += 1
+                dist[u] = d
+    kept = 0
+    for j in range(count):
+        m = found[j]
+        dist[m] = -1.0
+        if m == k or (cloth.pinned[m] == 0 and cloth.held[m] == 0 and cloth.grip[m] < 0):
+            found[kept] = m
+            kept += 1
+            cloth.grip[m] = k
+            i = m + m
+            cloth.offset[i] = cloth.pos[i] - cloth.pos[k + k]
+            cloth.offset[i + 1] = cloth.pos[i + 1] - cloth.pos[k + k + 1]
+            cloth.lead[i] = 0.0
+            cloth.lead[i + 1] = 0.0
+            cloth.aim[i] = cloth.pos[i]
+            cloth.aim[i + 1] = cloth.pos[i + 1]
+    return kept
+
+
+def let_go(cloth, k):
+    """Vertex k has just been let go (released or unpinned): if it is free now, the let-go
+    window (LET_GO_SLACK) starts with the next step."""
+    if cloth.pinned[k] == 0 and cloth.held[k] == 0:
+        cloth.let_go_pending = True
+
+
 def grab(cloth, k, x, y):
-    """Hold vertex k fixed at (x, y)."""
+    """Hold vertex k, with the hand at (x, y): with "xpbd" a free vertex is drawn toward it by a
+    hand of finite strength (HAND_FORCE); a pin, or any vertex of the seed's method, is put
+    there."""
     check_vertex(cloth, k)
     if cloth.held[k] == 0:
         cloth.n_held += 1
     cloth.held[k] = 1
-    place(cloth, k, x, y)
     refresh(cloth, k)
+    place(cloth, k, x, y)
 
 
 def move(cloth, k, x, y):
-    """Move a held vertex to (x, y); it stays fixed there."""
+    """Move the hand holding vertex k to (x, y)."""
     check_vertex(cloth, k)
     if cloth.held[k] == 0:
         raise SceneError('vertex: move needs a held vertex (grab it first)')
-    if x == cloth.pos[k + k] and y == cloth.pos[k + k + 1]:
+    if x == cloth.target[k + k] and y == cloth.target[k + k + 1]:
         return  # a hand held still changes nothing, and must not keep the cloth awake
     place(cloth, k, x, y)
-    refresh(cloth, k)
+    cloth.asleep = False
+    cloth.still_frames = 0
 
 
 def release(cloth, k):
@@ -719,6 +907,7 @@ def release(cloth, k):
         cloth.n_held -= 1
     cloth.held[k] = 0
     refresh(cloth, k)
+    let_go(cloth, k)
 
 
 def pin(cloth, k):
@@ -731,6 +920,7 @@ def unpin(cloth, k):
     check_vertex(cloth, k)
     cloth.pinned[k] = 0
     refresh(cloth, k)
+    let_go(cloth, k)
 
 
 def toggle_pin(cloth, k):
@@ -742,10 +932,15 @@ def toggle_pin(cloth, k):
 
 
 def place(cloth, k, x, y):
+    """The hand holding k goes to (x, y); a vertex moved where the hand is goes with it."""
     if not (x > -1e9 and x < 1e9 and y > -1e9 and y < 1e9):
         raise SceneError('to: must be finite and within 1e9 of the origin')
-    cloth.pos[k + k] = x
-    cloth.pos[k + k + 1] = y
+    cloth.target[k + k] = x
+    cloth.target[k + k + 1] = y
+    if cloth.inv_mass[k] == 0.0:
+        cloth.pos[k + k] = x
+        cloth.pos[k + k + 1] = y
+        rest_at(cloth, k)
 
 
 # ---- queries -------------------------------------------------------------------------------

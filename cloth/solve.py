@@ -24,7 +24,10 @@ K_AX = 5
 K_AY = 6
 K_MAX_STEP = 7
 K_TEAR2 = 8
-N_CONSTS = 9
+K_HAND_STEP = 9
+K_HAND_SHARE = 10
+K_HAND_PUSH = 11
+N_CONSTS = 12
 
 # Below this squared length an edge has no direction to push along (two fixed vertices
 # dragged onto one point): it is skipped rather than divided by zero, which would turn the
@@ -32,10 +35,11 @@ N_CONSTS = 9
 TINY2 = 1e-30
 
 
-def integrate(pos, prev, inv_mass, n, consts, anchor, tether, tethered):
+def integrate(pos, prev, inv_mass, n, consts, anchor, tether, tethered, held):
     """Position Verlet, x' = x + (x - x*) * keep + a h^2, for every free vertex, and when
     `tethered` its tether's projection right after it (below); returns how many vertices had
-    their speed clamped.
+    their speed clamped. A hand (held[k] == 1 with a mass: drive_hands has already placed it)
+    gets only its tether.
 
     keep = 1 / (1 + damping h): the velocity (x - x*) / h loses damping * h of itself per step,
     in a form that stays in (0, 1] for any damping and step (exp would not be bit-exact).
@@ -71,20 +75,26 @@ def integrate(pos, prev, inv_mass, n, consts, anchor, tether, tethered):
         i = k + k
         x = pos[i]
         y = pos[i + 1]
-        vx = (x - prev[i]) * keep
-        vy = (y - prev[i + 1]) * keep
-        v2 = vx * vx + vy * vy
-        if v2 > max_step2:
-            s = max_step / sqrt(v2)
-            vx = vx * s
-            vy = vy * s
-            clamped += 1
-        px = x + vx + ax
-        py = y + vy + ay
-        pos[i] = px
-        pos[i + 1] = py
-        prev[i] = x
-        prev[i + 1] = y
+        if held[k] == 1:
+            px = x
+            py = y
+            x = prev[i]
+            y = prev[i + 1]
+        else:
+            vx = (x - prev[i]) * keep
+            vy = (y - prev[i + 1]) * keep
+            v2 = vx * vx + vy * vy
+            if v2 > max_step2:
+                s = max_step / sqrt(v2)
+                vx = vx * s
+                vy = vy * s
+                clamped += 1
+            px = x + vx + ax
+            py = y + vy + ay
+            pos[i] = px
+            pos[i + 1] = py
+            prev[i] = x
+            prev[i + 1] = y
         if not tethered:
             continue
         c = anchor[k]
@@ -170,7 +180,10 @@ def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, consts, track,
     The accumulated lambda makes stiffness a material property (compliance, m/N) instead of a
     function of the iteration count; compliance 0 is an inextensible edge. Where the edge has
     turned by more than 25 degrees within the step, or is more than 10% off its rest length,
-    the linearisation is poor, and the edge is projected along d onto its exact length."""
+    the linearisation is poor, and the edge is projected along d onto its exact length.
+    The error it measures is the constraint's residual, C + alpha~ lambda (for an inextensible
+    edge C itself): a compliant edge is right when its stretch matches its force, not at rest
+    length."""
     sqrt = math.sqrt
     alpha = consts[K_ALPHA]
     worst = 0.0
@@ -210,7 +223,7 @@ def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, consts, track,
             ox = dx
             oy = dy
         if track:
-            q = c / r
+            q = (c + alpha * lam[e]) / r
             if q > worst:
                 worst = q
             elif -q > worst:
@@ -299,7 +312,7 @@ def project_cells(pos, inv_mass, cols, rows, strength, intact, cell_ok):
 
 
 def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, nx, ny, cc, cd,
-                intact, link_ok, consts):
+                intact, link_ok, consts, lam, slot):
     """Solve every edge of a grid line at once: for each of `lines` lines (node i of line l is
     first + l * line_step + i * stride, `nodes` nodes, every link consts[K_SPACING] long), the
     linearised
@@ -310,6 +323,14 @@ def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, n
     moves by w_i (n_i dl_i - n_i-1 dl_i-1). That is one Newton step. A line none of whose links
     is off by more than `tolerance` (a fraction of rest) is left alone; one whose worst link is
     off by more than sqrt(tolerance) is solved again, up to `newton` steps in all. nx, ny, cc, cd are work arrays of `nodes` doubles.
+
+    A compliant material (consts[K_ALPHA] = compliance / h^2 > 0) is the same solve of XPBD's
+    equations for the line: alpha~ joins the diagonal and the right-hand side is the residual
+    len_i - rest + alpha~ lambda_i, lambda the link's multiplier this step, shared with the
+    sweeps (lam[slot[a]] for the link from node a), so that each link ends where its stretch
+    matches its force. A hanging column is then exact in one solve, whatever its length
+    (measured: a 30x30 curtain hung from its top row, compliance 1e-6 m/N, 1 kg a vertex:
+    top strain 8.24e-3 against the exact 8.25e-3; 4.3e-2 without line solves).
     A torn cloth (not `intact`) has broken links (link_ok[a] == 0 for the link from node a):
     such a link has no direction and no error, so its multiplier is 0 and its neighbours'
     coupling to it vanishes: the line is solved as the chains between its breaks.
@@ -326,6 +347,8 @@ def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, n
     sqrt = math.sqrt
     rest = consts[K_SPACING]
     tolerance = consts[K_TOLERANCE]
+    alpha = consts[K_ALPHA]
+    compliant = alpha > 0.0
     links = nodes - 1
     tol = tolerance * rest
     # Newton converges quadratically: from a largest error e one step leaves about e^2 / rest,
@@ -349,8 +372,10 @@ def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, n
         for it in range(newton):
             a = start
             wa = inv_mass[a]
-            within = True
-            for i in range(links):
+            # (A compliant link's error is its residual, which needs its multiplier: measured
+            # by the elimination below.)
+            within = not compliant
+            for i in range(links if within else 0):
                 b = a + stride
                 wb = inv_mass[b]
                 if wa + wb > 0.0 and (intact or link_ok[a] == 1):
@@ -393,12 +418,16 @@ def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, n
                     ux = dx / length
                     uy = dy / length
                     rhs = length - rest
+                    if compliant:
+                        rhs += alpha * lam[slot[a]]
                 den = wa + wb
                 if den > 0.0:
                     if rhs > worst:
                         worst = rhs
                     elif -rhs > worst:
                         worst = -rhs
+                    if compliant:
+                        den += alpha
                 nx[i] = ux
                 ny[i] = uy
                 if i > 0:
@@ -433,6 +462,8 @@ def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, n
                 if i < links - 1:
                     dl -= cc[i] * later
                 later = dl
+                if compliant:
+                    lam[slot[a]] -= dl
                 sa = inv_mass[a] * dl
                 sb = inv_mass[b] * dl
                 ia = a + a
@@ -445,7 +476,7 @@ def solve_lines(pos, inv_mass, first, stride, nodes, lines, line_step, newton, n
                 pos[ib + 1] -= uy * sb
                 b = a
                 i -= 1
-            if worst <= once:
+            if worst <= once and not compliant:
                 break
 
 
@@ -512,127 +543,128 @@ def mark_overstretched(pos, edge_a, edge_b, rest, m, consts, most, best_q, best_
     return found
 
 
-def relieve(pos, prev, inv_mass, edge_a, edge_b, rest, m, anchor, tether, n, stretch, slack):
-    """One pass that takes out, without making velocity, stretch the cloth already has: every
-    tether more than `slack` (a fraction) beyond its limit and every edge more than `slack`
-    off its rest length is projected onto it exactly, with `prev` moved by the same amount.
-    Returns how many it moved.
-
-    Why: a correction made within a step becomes velocity, (pos - prev) / h. That is the
-    physics for what the step itself did (gravity, a hand's motion), but not for stretch that
-    letting go of a vertex reveals: a cloth pulled beyond its reach and let go has its tethers
-    re-anchored to the pins at once, and would turn its whole stretch into speed within one
-    substep (measured: 584 vertices above 5 m/s, up to 98 m/s, after a 0.3 m
-    over-pull of a 1 m cloth at 8 substeps). Split this way (the "split impulse" of rigid-body
-    engines), it returns to shape without being flung."""
+def drive_hands(pos, prev, hands, count, grip, offset, target, lead, aim, consts):
+    """Before a step's constraints, the hands (sim.HAND_FORCE): for each vertex in a hand's
+    grip (sim.regrip), its own point `aim` moves toward where the hand holds it (the hand's
+    target + its offset + lead) by consts[K_HAND_SHARE] of what is left of
+    the way (1 / the steps left in the frame: a frame's motion is spread evenly over its
+    steps), at most consts[K_HAND_STEP] = HAND_SPEED h; then its vertex, a particle with
+    inertia, is pushed so that it would land on the aim, x' = x + (x - x*) + push, with a push of
+    at most consts[K_HAND_PUSH]: the most force the hand has (sim.HAND_FORCE). The constraints
+    that follow may pull it back; `lead` (hold_hands) is how much farther the hand reaches to
+    make up for a load it holds."""
     sqrt = math.sqrt
-    hi = 1.0 + slack
-    lo = 1.0 - slack
-    moved = 0
+    share = consts[K_HAND_SHARE]
+    most = consts[K_HAND_STEP]
+    most2 = most * most
+    push = consts[K_HAND_PUSH]
+    push2 = push * push
+    for j in range(count):
+        k = hands[j]
+        i = k + k
+        ax = aim[i]
+        ay = aim[i + 1]
+        g = grip[k] + grip[k]
+        gx = (target[g] + offset[i] + lead[i] - ax) * share
+        gy = (target[g + 1] + offset[i + 1] + lead[i + 1] - ay) * share
+        g2 = gx * gx + gy * gy
+        if g2 > most2:
+            s = most / sqrt(g2)
+            gx = gx * s
+            gy = gy * s
+        ax += gx
+        ay += gy
+        aim[i] = ax
+        aim[i + 1] = ay
+        x = pos[i]
+        y = pos[i + 1]
+        vx = x - prev[i]
+        vy = y - prev[i + 1]
+        px = ax - x - vx
+        py = ay - y - vy
+        p2 = px * px + py * py
+        if p2 > push2:
+            s = push / sqrt(p2)
+            px = px * s
+            py = py * s
+        prev[i] = x
+        prev[i + 1] = y
+        pos[i] = x + vx + px
+        pos[i + 1] = y + vy + py
+
+
+def hold_hands(pos, hands, count, lead, aim, consts):
+    """After a step's constraints: each hand's lead grows by how far the cloth pulled its vertex
+    back from the hand's point, up to consts[K_HAND_PUSH] in all. A hand that holds a load
+    then reaches farther by what the load takes back, and the vertex rests where the hand is
+    (an integral controller), while the pull it can make stays bounded by its push."""
+    sqrt = math.sqrt
+    most = consts[K_HAND_PUSH]
+    most2 = most * most
+    for j in range(count):
+        k = hands[j]
+        i = k + k
+        lx = lead[i] + aim[i] - pos[i]
+        ly = lead[i + 1] + aim[i + 1] - pos[i + 1]
+        l2 = lx * lx + ly * ly
+        if l2 > most2:
+            s = most / sqrt(l2)
+            lx = lx * s
+            ly = ly * s
+        lead[i] = lx
+        lead[i + 1] = ly
+
+
+def follow_velocity(pos, before, n, per_time, vel):
+    """vel (2n) <- the mean of vel and (pos - before) * per_time: each vertex's velocity,
+    smoothed over frames (a vertex that only shakes back and forth averages out)."""
+    for i in range(n + n):
+        vel[i] = 0.5 * (vel[i] + (pos[i] - before[i]) * per_time)
+
+
+def limit_speed(pos, prev, inv_mass, n, vel, h, extra, out):
+    """If some free vertex's step, relative to the free vertices' mean step, is longer than
+    (|vel_k| + extra) h, scale every free vertex's relative step by the one factor that brings
+    the worst back to it; out[0] = that factor (1: none). One factor for all, so that the
+    cloth's shape is a blend of two shapes the solver made (where it was and where it would
+    go) and not bent by a limit that holds back one vertex and not its neighbour; relative to
+    the mean step, so that the cloth's momentum (a throw) stays."""
+    sqrt = math.sqrt
+    mx = 0.0
+    my = 0.0
+    count = 0
     for k in range(n):
-        c = anchor[k]
-        if c < 0 or inv_mass[k] == 0.0:
+        if inv_mass[k] == 0.0:
             continue
         i = k + k
-        j = c + c
-        dx = pos[i] - pos[j]
-        dy = pos[i + 1] - pos[j + 1]
-        d2 = dx * dx + dy * dy
-        limit = tether[k] * stretch
-        if d2 <= limit * limit * hi * hi:
+        mx += pos[i] - prev[i]
+        my += pos[i + 1] - prev[i + 1]
+        count += 1
+    out[0] = 1.0
+    if count == 0:
+        return
+    mx = mx / count
+    my = my / count
+    scale = 1.0
+    for k in range(n):
+        if inv_mass[k] == 0.0:
             continue
-        d = sqrt(d2)
-        s = (d - limit) / d
-        moved += 1
-        pos[i] -= dx * s
-        pos[i + 1] -= dy * s
-        prev[i] -= dx * s
-        prev[i + 1] -= dy * s
-    hi2 = hi * hi
-    lo2 = lo * lo
-    for e in range(m):
-        a = edge_a[e]
-        b = edge_b[e]
-        wa = inv_mass[a]
-        wb = inv_mass[b]
-        w = wa + wb
-        if w == 0.0:
+        i = k + k
+        ux = pos[i] - prev[i] - mx
+        uy = pos[i + 1] - prev[i + 1] - my
+        u2 = ux * ux + uy * uy
+        most = (sqrt(vel[i] * vel[i] + vel[i + 1] * vel[i + 1]) + extra) * h
+        if u2 * scale * scale > most * most:
+            scale = most / sqrt(u2)
+    out[0] = scale
+    if scale == 1.0:
+        return
+    for k in range(n):
+        if inv_mass[k] == 0.0:
             continue
-        ia = a + a
-        ib = b + b
-        dx = pos[ib] - pos[ia]
-        dy = pos[ib + 1] - pos[ia + 1]
-        d2 = dx * dx + dy * dy
-        r = rest[e]
-        r2 = r * r
-        if (d2 <= hi2 * r2 and d2 >= lo2 * r2) or d2 < TINY2:
-            continue
-        length = sqrt(d2)
-        s = (length - r) / length / w
-        moved += 1
-        sa = s * wa
-        sb = s * wb
-        pos[ia] += dx * sa
-        pos[ia + 1] += dy * sa
-        pos[ib] -= dx * sb
-        pos[ib + 1] -= dy * sb
-        prev[ia] += dx * sa
-        prev[ia + 1] += dy * sa
-        prev[ib] -= dx * sb
-        prev[ib + 1] -= dy * sb
-    return moved
-
-
-def relieve_cells(pos, prev, inv_mass, cols, rows, slack, intact, cell_ok):
-    """The cells' part of `relieve`: every cell more than `slack` (a length) from a
-    parallelogram is projected onto one, with `prev` moved by the same amount, so that the
-    shape a hand forced on the cloth (a vertex dragged 100 m away) goes when it lets go without
-    turning into speed. Returns how many cells it moved."""
-    slack2 = slack * slack
-    moved = 0
-    for r in range(rows - 1):
-        base = r * cols
-        for c in range(cols - 1):
-            if not intact and cell_ok[base - r + c] == 0:
-                continue
-            a = base + c
-            b = a + 1
-            d = a + cols
-            e = d + 1
-            wa = inv_mass[a]
-            wb = inv_mass[b]
-            we = inv_mass[e]
-            wd = inv_mass[d]
-            w = wa + wb + we + wd
-            if w == 0.0:
-                continue
-            ia = a + a
-            ib = b + b
-            ie = e + e
-            idd = d + d
-            ex = pos[ia] + pos[ie] - pos[ib] - pos[idd]
-            ey = pos[ia + 1] + pos[ie + 1] - pos[ib + 1] - pos[idd + 1]
-            if ex * ex + ey * ey <= slack2:
-                continue
-            moved += 1
-            sx = ex / w
-            sy = ey / w
-            shift_cell(pos, ia, ib, ie, idd, wa, wb, we, wd, sx, sy)
-            shift_cell(prev, ia, ib, ie, idd, wa, wb, we, wd, sx, sy)
-    return moved
-
-
-def shift_cell(xy, ia, ib, ie, idd, wa, wb, we, wd, sx, sy):
-    """Move a cell's corners by their shares of the defect (sx, sy): A and C against it, B and
-    D with it (relieve_cells; project_cells has the same lines inline, being per step)."""
-    xy[ia] -= wa * sx
-    xy[ia + 1] -= wa * sy
-    xy[ie] -= we * sx
-    xy[ie + 1] -= we * sy
-    xy[ib] += wb * sx
-    xy[ib + 1] += wb * sy
-    xy[idd] += wd * sx
-    xy[idd + 1] += wd * sy
+        i = k + k
+        pos[i] = prev[i] + mx + (pos[i] - prev[i] - mx) * scale
+        pos[i + 1] = prev[i + 1] + my + (pos[i + 1] - prev[i + 1] - my) * scale
 
 
 def max_motion2(pos, prev, inv_mass, n, out):

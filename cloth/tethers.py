@@ -1,4 +1,4 @@
-"""Anchors for long-range tethers: for every vertex, the nearest fixed vertex along the cloth,
+"""Anchors for long-range tethers: for every vertex, the nearest pinned vertex along the cloth,
 and the tether's length, the length of that shortest path over the edges.
 
 "Nearest along the cloth" is the shortest path over the scene's edges weighted by rest
@@ -11,7 +11,7 @@ exact equilibrium: such tethers pulled the cloth 13-15% of its width away from w
 physics hangs it, and walled a folded cloth in. The path length can never be exceeded without
 stretching an edge, so these tethers only ever remove stretch; where the path is straight
 (a curtain hanging below its pins) it is the straight distance and they are as tight as before.
-Run only when the set of fixed vertices changes (pin, unpin, grab, release), not per frame.
+Run only when the set of pins changes (pin, unpin), not per frame.
 """
 
 import math
@@ -20,10 +20,11 @@ from cloth.host import f64, i32
 from cloth.solve import K_SPACING
 
 
-def find_anchors(n, adj_start, adj_vertex, adj_rest, inv_mass, anchor, tether):
-    """Fill anchor[k] (the nearest fixed vertex along the edges, or -1 if none is reachable)
+def find_anchors(n, adj_start, adj_vertex, adj_rest, pinned, anchor, tether):
+    """Fill anchor[k] (the nearest pinned vertex along the edges, or -1 if none is reachable)
     and tether[k] (the rest length of the shortest path to it); Dijkstra with a binary heap
-    of (distance, vertex) and lazy deletion."""
+    of (distance, vertex) and lazy deletion. Pins only: a hand (sim.HAND_FORCE) is held back by
+    the cloth, so it must not hold the cloth with tethers of its own."""
     total = adj_start[n] + n + 1
     heap_d = f64(total)
     heap_v = i32(total)
@@ -31,12 +32,12 @@ def find_anchors(n, adj_start, adj_vertex, adj_rest, inv_mass, anchor, tether):
     for k in range(n):
         anchor[k] = -1
         tether[k] = 0.0
-        if inv_mass[k] == 0.0:
+        if pinned[k] == 1:
             anchor[k] = k
             heap_d[size] = 0.0
             heap_v[size] = k
             size += 1
-    # Every fixed vertex starts at distance 0, so the initial heap is already ordered.
+    # Every pin starts at distance 0, so the initial heap is already ordered.
     done = i32(n)
     while size > 0:
         d = heap_d[0]
@@ -70,10 +71,11 @@ def list_fixed(inv_mass, n, fixed):
     return count
 
 
-def over_reach(pos, held, fixed, n_fixed, cols, consts, intact, piece, out):
+def over_reach(pos, held, pinned, hands_give, fixed, n_fixed, cols, consts, intact, piece, out):
     """How far the hands have pulled the cloth beyond its reach (in out[0]): the largest ratio,
     at least 1, of a held vertex's distance from another fixed vertex to the two's rest
-    distance.
+    distance. Only held vertices moved where the hand is count: all of them for the seed's
+    method, held pins for the default (`hands_give`), whose other hands give way instead.
 
     The tethers are scaled by it while anything is held. Unscaled, a vertex pulled beyond
     reach leaves the vertices tied to it and those tied to the pins each within their own
@@ -85,7 +87,7 @@ def over_reach(pos, held, fixed, n_fixed, cols, consts, intact, piece, out):
     h2 = spacing * spacing
     for j in range(n_fixed):            # a held vertex is fixed: it is in the list
         k = fixed[j]
-        if held[k] == 0:
+        if held[k] == 0 or (hands_give and pinned[k] == 0):
             continue
         row = k // cols
         col = k % cols
