@@ -17,7 +17,7 @@ from cloth.host import f64, i32
 from cloth.scene import SceneError
 from cloth.solve import integrate, sweep_jakobsen, sweep_xpbd, project_cells, \
     solve_lines, clear, max_motion2, copy_into, mark_crossed, \
-    mark_overstretched, drive_hands, hold_hands, limit_speed, follow_velocity, N_CONSTS, K_SPACING, K_TOLERANCE, K_ALPHA, \
+    mark_overstretched, drive_hands, limit_speed, follow_velocity, N_CONSTS, K_SPACING, K_TOLERANCE, K_ALPHA, \
     K_STRETCH, K_KEEP, K_AX, K_AY, K_MAX_STEP, K_TEAR2, K_HAND_STEP, K_HAND_SHARE, K_HAND_PUSH
 from cloth.measure import deformation, nearest_vertex
 from cloth.tethers import find_anchors, list_fixed, over_reach, label_pieces
@@ -71,6 +71,8 @@ HAND_SPEED = 10.0
 HAND_FORCE = 2.0
 HAND_PUSH = 0.1
 HAND_RADIUS = 0.02
+HAND_MASS = 4.0
+HAND_ACCEL = 100.0
 
 # Letting go: for a while after a vertex is let go (released, unpinned), the cloth's motion
 # relative to its mean motion is slowed, all of it by one factor, wherever some vertex would
@@ -112,10 +114,8 @@ class Cloth:
         self.inv_mass = f64(n)
         self.pinned = i32(n)
         self.held = i32(n)
-        # The hands (HAND_FORCE): where each is, where it last put each vertex it holds, and
-        # how much farther it reaches to make up for a load.
+        # The hands (HAND_FORCE): where each is, and where it is taking each vertex it holds.
         self.target = f64(2 * n)
-        self.lead = f64(2 * n)
         self.aim = f64(2 * n)
         self.hands = i32(n)
         self.n_hands = 0
@@ -441,8 +441,6 @@ def step(cloth):
         if cloth.use_xpbd:
             start_let_go(cloth)
     relax(cloth)
-    if cloth.n_hands > 0:
-        hold_hands(cloth.pos, cloth.hands, cloth.n_hands, cloth.lead, cloth.aim, cloth.consts)
     if cloth.let_go:
         cloth.let_go_t += cloth.h
         limit_speed(cloth.pos, cloth.prev, cloth.inv_mass, cloth.n_verts, cloth.velocity,
@@ -475,7 +473,7 @@ def relax(cloth):
     tethered = cloth.use_tethers and cloth.iterations > 0
     if cloth.n_hands > 0:
         drive_hands(pos, cloth.prev, cloth.hands, cloth.n_hands, cloth.grip, cloth.offset,
-                    cloth.target, cloth.lead, cloth.aim, cloth.consts)
+                    cloth.target, cloth.aim, cloth.consts)
     cloth.clamped += integrate(pos, cloth.prev, inv_mass, n, cloth.consts, cloth.anchor,
                                cloth.tether, tethered, cloth.held)
     if cloth.use_xpbd:
@@ -488,7 +486,7 @@ def relax(cloth):
     # and a cloth at rest spends its step on one sweep (curtain 120x120: 25% fewer projections).
     if cloth.use_cells and not cloth.converged:
         project_cells(pos, inv_mass, cloth.cols, cloth.rows, CELL_STRENGTH, cloth.intact,
-                      cloth.cell_ok)
+                      cloth.cell_ok, cloth.n_hands > 0, cloth.grip)
         cloth.projections += (cloth.cols - 1) * (cloth.rows - 1)
     track = cloth.tolerance > 0.0
     for it in range(cloth.iterations):
@@ -583,7 +581,10 @@ def configure(cloth, scene):
     # Masses: a free vertex's, and a hand's (HAND_FORCE), at this step size.
     cloth.free_w = 1.0 / scene.mass
     hand_force = HAND_FORCE * scene.mass * n * 9.81
-    cloth.hand_w = HAND_PUSH * cloth.spacing / (hand_force * h2)
+    hand_mass = max(hand_force * h2 / (HAND_PUSH * cloth.spacing), HAND_MASS * scene.mass)
+    hand_force = max(hand_force, hand_mass * HAND_ACCEL)
+    cloth.hand_w = 1.0 / hand_mass
+    cloth.hand_push = hand_force * h2 / hand_mass
     # Work arrays of the line solves (one line at a time), and the sleep test's two copies of
     # the positions (a frame ago, at the window's start): allocated when first needed.
     longest = max(cloth.cols, cloth.rows)
@@ -604,7 +605,7 @@ def configure(cloth, scene):
     k[K_MAX_STEP] = cloth.max_step
     k[K_TEAR2] = (1.0 + scene.tear) * (1.0 + scene.tear)
     k[K_HAND_STEP] = HAND_SPEED * cloth.h
-    k[K_HAND_PUSH] = HAND_PUSH * cloth.spacing
+    k[K_HAND_PUSH] = cloth.hand_push
     cloth.use_sleep = scene.sleep
     extent = max(longest - 1, 1) * cloth.spacing
     cloth.still_motion2 = SLEEP_MOTION * SLEEP_MOTION * extent * extent
@@ -639,6 +640,10 @@ def retune(cloth, scene):
             regrip(cloth, k)
     for k in range(cloth.n_verts):
         set_mass(cloth, k)
+        if cloth.held[k] == 1 and cloth.inv_mass[k] == 0.0:
+            # now moved where the hand is: the hand is where the vertex is
+            cloth.target[k + k] = cloth.pos[k + k]
+            cloth.target[k + k + 1] = cloth.pos[k + k + 1]
     cloth.anchors_stale = True
     cloth.converged = False
     cloth.asleep = False
@@ -862,8 +867,6 @@ def gather_grip(cloth, k):
             i = m + m
             cloth.offset[i] = cloth.pos[i] - cloth.pos[k + k]
             cloth.offset[i + 1] = cloth.pos[i + 1] - cloth.pos[k + k + 1]
-            cloth.lead[i] = 0.0
-            cloth.lead[i + 1] = 0.0
             cloth.aim[i] = cloth.pos[i]
             cloth.aim[i + 1] = cloth.pos[i + 1]
     return kept

@@ -238,7 +238,7 @@ def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, consts, track,
     out[0] = worst
 
 
-def project_cells(pos, inv_mass, cols, rows, strength, intact, cell_ok):
+def project_cells(pos, inv_mass, cols, rows, strength, intact, cell_ok, hands_on, grip):
     """Pull every cell toward a parallelogram: for the cell A = (r, c), B = (r, c+1),
     C = (r+1, c+1), D = (r+1, c), the linear constraint A + C - B - D = 0, of which each pass
     removes the fraction `strength` (each corner moving by its share w_i / sum w).
@@ -288,6 +288,8 @@ def project_cells(pos, inv_mass, cols, rows, strength, intact, cell_ok):
             b = a + 1
             d = a + cols
             e = d + 1
+            if hands_on and (grip[a] >= 0 or grip[b] >= 0 or grip[d] >= 0 or grip[e] >= 0):
+                continue    # a hand bends the cloth where it holds it (sim.HAND_FORCE)
             wa = inv_mass[a]
             wb = inv_mass[b]
             we = inv_mass[e]
@@ -543,16 +545,16 @@ def mark_overstretched(pos, edge_a, edge_b, rest, m, consts, most, best_q, best_
     return found
 
 
-def drive_hands(pos, prev, hands, count, grip, offset, target, lead, aim, consts):
-    """Before a step's constraints, the hands (sim.HAND_FORCE): for each vertex in a hand's
-    grip (sim.regrip), its own point `aim` moves toward where the hand holds it (the hand's
-    target + its offset + lead) by consts[K_HAND_SHARE] of what is left of
-    the way (1 / the steps left in the frame: a frame's motion is spread evenly over its
-    steps), at most consts[K_HAND_STEP] = HAND_SPEED h; then its vertex, a particle with
-    inertia, is pushed so that it would land on the aim, x' = x + (x - x*) + push, with a push of
-    at most consts[K_HAND_PUSH]: the most force the hand has (sim.HAND_FORCE). The constraints
-    that follow may pull it back; `lead` (hold_hands) is how much farther the hand reaches to
-    make up for a load it holds."""
+def drive_hands(pos, prev, hands, count, grip, offset, target, aim, consts):
+    """Before a step's constraints, the hands (sim.HAND_FORCE). For each vertex in a hand's grip
+    (sim.regrip), its own point `aim` moves toward where the hand holds it (the hand's target +
+    the vertex's offset) by consts[K_HAND_SHARE] of what is left of the way (1 / the steps left
+    in the frame: a frame's motion is spread evenly over its steps), at most
+    consts[K_HAND_STEP] = HAND_SPEED h. Then the vertex, a particle with inertia, is pushed so
+    that it lands on the aim, x' = x + (x - x*) + push, the push at most consts[K_HAND_PUSH]:
+    the most force the hand has (sim.HAND_FORCE). The constraints that follow may pull it back:
+    the next step's push, which makes up for the velocity that left, pulls harder (a hand that
+    holds a load rests where it is held while the load is within its strength)."""
     sqrt = math.sqrt
     share = consts[K_HAND_SHARE]
     most = consts[K_HAND_STEP]
@@ -565,8 +567,8 @@ def drive_hands(pos, prev, hands, count, grip, offset, target, lead, aim, consts
         ax = aim[i]
         ay = aim[i + 1]
         g = grip[k] + grip[k]
-        gx = (target[g] + offset[i] + lead[i] - ax) * share
-        gy = (target[g + 1] + offset[i + 1] + lead[i + 1] - ay) * share
+        gx = (target[g] + offset[i] - ax) * share
+        gy = (target[g + 1] + offset[i + 1] - ay) * share
         g2 = gx * gx + gy * gy
         if g2 > most2:
             s = most / sqrt(g2)
@@ -580,8 +582,20 @@ def drive_hands(pos, prev, hands, count, grip, offset, target, lead, aim, consts
         y = pos[i + 1]
         vx = x - prev[i]
         vy = y - prev[i + 1]
-        px = ax - x - vx
-        py = ay - y - vy
+        # The step it should take: all the way to the aim, but no faster than it could stop
+        # by pushing back with half its strength (sqrt(push d), a braking distance; the other
+        # half for the cloth's pull), so that a push too weak to land on the aim in one step
+        # does not overshoot it (measured, 3x3 curtain: with all of it, 6 cm past the aim).
+        dx = ax - x
+        dy = ay - y
+        d2 = dx * dx + dy * dy
+        brake = push * sqrt(d2)
+        if d2 > brake:
+            s = sqrt(brake / d2)
+            dx = dx * s
+            dy = dy * s
+        px = dx - vx
+        py = dy - vy
         p2 = px * px + py * py
         if p2 > push2:
             s = push / sqrt(p2)
@@ -591,28 +605,6 @@ def drive_hands(pos, prev, hands, count, grip, offset, target, lead, aim, consts
         prev[i + 1] = y
         pos[i] = x + vx + px
         pos[i + 1] = y + vy + py
-
-
-def hold_hands(pos, hands, count, lead, aim, consts):
-    """After a step's constraints: each hand's lead grows by how far the cloth pulled its vertex
-    back from the hand's point, up to consts[K_HAND_PUSH] in all. A hand that holds a load
-    then reaches farther by what the load takes back, and the vertex rests where the hand is
-    (an integral controller), while the pull it can make stays bounded by its push."""
-    sqrt = math.sqrt
-    most = consts[K_HAND_PUSH]
-    most2 = most * most
-    for j in range(count):
-        k = hands[j]
-        i = k + k
-        lx = lead[i] + aim[i] - pos[i]
-        ly = lead[i + 1] + aim[i + 1] - pos[i + 1]
-        l2 = lx * lx + ly * ly
-        if l2 > most2:
-            s = most / sqrt(l2)
-            lx = lx * s
-            ly = ly * s
-        lead[i] = lx
-        lead[i + 1] = ly
 
 
 def follow_velocity(pos, before, n, per_time, vel):

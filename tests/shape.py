@@ -41,8 +41,9 @@ def slack_scene(n, span=0.8, move_frames=300, **keys):
 
 
 # Disturbances of a 10 x 8 cloth, 1 m wide, hung from its top corners (damping 1/s, as the
-# presets): a vertex is grabbed after the cloth has hung for HANG frames, carried by (dx, dy)
-# over `frames` frames in a straight line (1 frame: thrown), and let go. Afterwards the cloth
+# presets): a vertex is grabbed after the cloth has hung for HANG frames (as a fixture, see
+# gesture_actions), carried by (dx, dy) over `frames` frames in a straight line (1 frame:
+# thrown), and let go. Afterwards the cloth
 # must come back to its undisturbed hang.
 COLS, ROWS = 10, 8
 HANG = 120
@@ -67,13 +68,20 @@ def hang_scene(**keys):
     return scene
 
 
-def gesture_actions(vertex, path, start=HANG):
+def gesture_actions(vertex, path, start=HANG, fixture=False):
     """grab at frame `start`, then one move per point of `path` ([(x, y)] relative to where the
-    vertex hangs, which the caller gives as the first point's base), then release."""
-    actions = [{'frame': start, 'op': 'grab', 'vertex': vertex}]
+    vertex hangs, which the caller gives as the first point's base), then release. With
+    `fixture` the vertex is pinned before the grab and unpinned after the release: a dragged
+    pin goes exactly where the hand puts it, however fast (a free vertex's hand has a finite
+    strength and speed, cloth/sim.py HAND_FORCE), the most violent gesture a person can make."""
+    end = start + 1 + len(path)
+    actions = [{'frame': start, 'op': 'pin', 'vertex': vertex}] if fixture else []
+    actions.append({'frame': start, 'op': 'grab', 'vertex': vertex})
     for i, (x, y) in enumerate(path):
         actions.append({'frame': start + 1 + i, 'op': 'move', 'vertex': vertex, 'to': [x, y]})
-    actions.append({'frame': start + 1 + len(path), 'op': 'release', 'vertex': vertex})
+    actions.append({'frame': end, 'op': 'release', 'vertex': vertex})
+    if fixture:
+        actions.append({'frame': end, 'op': 'unpin', 'vertex': vertex})
     return actions
 
 

@@ -4,6 +4,7 @@ actions in any order (n log n), a trace of any size in bounded memory, and setti
 on a running cloth. The page's side of them: tests/browser/test_defects_page.py."""
 
 import json
+import math
 import random
 import subprocess
 import sys
@@ -169,7 +170,7 @@ def test_trace_memory_stays_that_of_one_frame():
 
 def running(scene, frames=30):
     cloth = load(json.dumps(scene))
-    grab(cloth, 5, 0.25, 0.05)
+    grab(cloth, 9, 0.1, -0.2)        # held where it is (within the cloth's reach)
     pin(cloth, 2)
     for _ in range(frames):
         frame(cloth)
@@ -192,7 +193,8 @@ def test_a_setting_applies_to_the_running_cloth_and_keeps_its_state(change):
     for _ in range(30):
         frame(cloth)
     assert all(v == v for v in cloth.pos)
-    assert cloth.pos[10:12] == [0.25, 0.05]     # the held vertex stays held
+    # the held vertex stays held
+    assert math.dist(cloth.pos[18:20], [0.1, -0.2]) < 1e-3
 
 
 def test_changing_substeps_keeps_the_velocity():

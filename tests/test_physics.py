@@ -103,8 +103,8 @@ def test_pendulum_never_gains_energy(solver):
 def test_chain_settles_on_exact_discrete_equilibrium(solver):
     n_links, link = 10, 0.1
     span = 0.7
-    actions = [{'frame': 0, 'op': 'grab', 'vertex': n_links, 'to': [span, 0.0]},
-               {'frame': 0, 'op': 'pin', 'vertex': n_links},
+    actions = [{'frame': 0, 'op': 'pin', 'vertex': n_links},
+               {'frame': 0, 'op': 'grab', 'vertex': n_links, 'to': [span, 0.0]},
                {'frame': 0, 'op': 'release', 'vertex': n_links}]
     keys = dict(cols=n_links + 1, rows=1, spacing=link, pins=[0], damping=2.0,
                 solver=solver, actions=actions)

@@ -67,8 +67,10 @@ def test_cli_runs_the_scenes_frames_and_frames_wins(tmp_path):
 
 def test_actions_of_the_last_frame_apply_after_it():
     """A recording ends with what a person did at its last frame: a grab and a move made while
-    the page was paused at frame 10 are in the state of frame 10."""
-    acts = [{'frame': 10, 'op': 'grab', 'vertex': 5, 'to': [0.3, 0.2]},
+    the page was paused at frame 10 are in the state of frame 10 (a pinned vertex, which the
+    hand puts where it is at once)."""
+    acts = [{'frame': 10, 'op': 'pin', 'vertex': 5},
+            {'frame': 10, 'op': 'grab', 'vertex': 5, 'to': [0.3, 0.2]},
             {'frame': 10, 'op': 'move', 'vertex': 5, 'to': [0.35, 0.25]}]
     out = json.loads(run(text(actions=acts), 10))
     assert out['positions'][5] == [0.35, 0.25]

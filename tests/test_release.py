@@ -1,20 +1,25 @@
-"""Pulling beyond reach and letting go: the stretch is shared out while held, the cloth returns
-to shape without being flung, and a flick still throws it (cloth/sim.py RELIEVE_SLACK,
-cloth/solve.py relieve, cloth/tethers.py over_reach)."""
+"""Pulling and letting go (issue #21): a hand of finite strength stops where an inextensible
+cloth can reach instead of stretching it, pulls a compliant one only as hard as it can, and
+whatever stretch a hand leaves returns without a fling, while a throw still throws
+(cloth/sim.py HAND_FORCE and LET_GO_SLACK)."""
 import math
 
+from hypothesis import given, settings, strategies as st, HealthCheck
 import pytest
 
 import cloth.sim as sim
-from cloth.sim import frame, grab, move, release, pin, unpin
+from cloth.sim import frame, grab, move, release, pin
 from helpers import load, scene
 
 N = 12
 H = 1.0 / (N - 1)
+PINS = list(range(0, N, 3)) + [N - 1]
+# The presets' material (webgl's Jersey): 0.2 kg/m^2, 500 N/m.
+JERSEY = dict(density=0.2, compliance=1.0 / 500)
 
 
 def hanging(**extra):
-    keys = dict(cols=N, rows=N, spacing=H, pins=list(range(0, N, 3)) + [N - 1], damping=0.5)
+    keys = dict(cols=N, rows=N, spacing=H, pins=PINS, damping=1.0)
     keys.update(extra)
     cloth = load(scene(**keys))
     for _ in range(120):
@@ -22,42 +27,159 @@ def hanging(**extra):
     return cloth
 
 
-def speeds(cloth):
-    return [math.hypot(cloth.pos[2 * k] - cloth.prev[2 * k],
-                       cloth.pos[2 * k + 1] - cloth.prev[2 * k + 1]) / cloth.h
-            for k in range(cloth.n_verts)]
-
-
-def overpull_and_let_go(cloth, dx, dy):
-    """Grab the bottom-middle vertex, pull it (dx, dy) beyond where it hangs over a second,
-    hold it there a second, let go; return the largest speed over the next 10 frames."""
-    k = (N - 1) * N + N // 2
+def pull(cloth, k, dx, dy, frames=40, hold=0, kinematic=False):
+    """Grab vertex k where it is, carry the hand (dx, dy) over `frames` frames, hold it still
+    for `hold` frames; returns the largest strain while held. With `kinematic` the vertex is
+    pinned first, so the hand puts it where it is (a dragged pin)."""
+    if kinematic:
+        pin(cloth, k)
     x0, y0 = cloth.pos[2 * k], cloth.pos[2 * k + 1]
     grab(cloth, k, x0, y0)
-    for f in range(120):
-        t = min(1.0, f / 60.0)
+    worst = 0.0
+    for f in range(1, frames + hold + 1):
+        t = min(1.0, f / frames)
         move(cloth, k, x0 + dx * t, y0 + dy * t)
         frame(cloth)
+        cloth.measure()
+        worst = max(worst, cloth.max_strain)
+    return worst
+
+
+def let_go(cloth, k):
+    """Release k; return (the fastest any vertex moved in a frame over the next 3 frames, m/s;
+    how far the cloth rose, within a second, above both its highest pin and its highest point
+    at the release, beyond where the speed it had then carries it: v^2 / 2g for the fastest
+    upward speed of the last step)."""
+    top = max(cloth.pos[2 * j + 1] for j in range(cloth.n_verts))
+    pins = [cloth.pos[2 * j + 1] for j in range(cloth.n_verts) if cloth.pinned[j] == 1]
+    up = max(0.0, max(cloth.pos[2 * j + 1] - cloth.prev[2 * j + 1] for j in range(cloth.n_verts)) / cloth.h)
+    ceiling = max([top] + pins) + up * up / (2 * 9.81)
     release(cloth, k)
     fastest = 0.0
-    for _ in range(10):
+    rise = -1e9
+    for f in range(60):
+        before = list(cloth.pos)
         frame(cloth)
-        fastest = max(fastest, max(speeds(cloth)))
-    return fastest
+        if f < 3:
+            fastest = max(fastest, max(math.hypot(cloth.pos[2 * j] - before[2 * j],
+                                                  cloth.pos[2 * j + 1] - before[2 * j + 1])
+                                       for j in range(cloth.n_verts)) / cloth.dt)
+        rise = max(rise, max(cloth.pos[2 * j + 1] for j in range(cloth.n_verts)) - ceiling)
+    return fastest, rise
 
 
-@pytest.mark.parametrize('dx, dy', [(0.0, -0.3), (1.0, -1.5)])
-def test_a_cloth_pulled_beyond_its_reach_is_not_flung_when_let_go(dx, dy):
-    fastest = overpull_and_let_go(hanging(), dx, dy)
-    seed = overpull_and_let_go(hanging(solver='jakobsen'), dx, dy)
-    # It springs back about as fast as the seed's cloth does (which stretches instead).
-    assert fastest < max(5.0, 1.5 * seed), (fastest, seed)
+BOTTOM = (N - 1) * N + N // 2
+# Nothing rises, after a release, more than this above the highest pin and the highest point at
+# the release. Not zero: a compliant top edge between two pins is pushed up by the cloth swinging
+# back under it (a sheet in its plane cannot buckle out of it; measured up to 2.7 cm on this
+# 12x12 jersey, 1 mm inextensible), and a cloth pushed up unfolds a little upward as it drops.
+RISE = 0.04
 
 
-def test_without_relieve_the_same_release_flings_it(monkeypatch):
-    # The test above can fail: with the relieving passes off, the same release is violent.
-    monkeypatch.setattr(sim, 'RELIEVE_PASSES', 0)
-    assert overpull_and_let_go(hanging(), 0.0, -0.3) > 20.0
+def reach(cloth, k):
+    """How far vertex k is from each pin, as a share of the length of the grid path to it: at
+    most 1 wherever an inextensible cloth can take it."""
+    r, c = divmod(k, N)
+    return max(math.hypot(cloth.pos[2 * k] - cloth.pos[2 * p], cloth.pos[2 * k + 1] - cloth.pos[2 * p + 1])
+               / ((r + abs(c - p)) * H) for p in PINS)
+
+
+def test_a_hand_stops_where_an_inextensible_cloth_can_reach():
+    cloth = hanging()
+    held = pull(cloth, BOTTOM, 0.0, -0.3, hold=60)
+    # The bottom of a hanging column is as far from its pins as it can be: pulled 0.3 m down,
+    # the vertex stays, and the cloth is not stretched.
+    assert reach(cloth, BOTTOM) < 1.0 + 1e-3
+    assert held < 0.05, held
+    # The control: a hand that puts the vertex where it is (a dragged pin) stretches it.
+    kinematic = hanging()
+    assert pull(kinematic, BOTTOM, 0.0, -0.3, hold=60, kinematic=True) > 0.2
+
+
+@pytest.mark.parametrize('material', [{}, JERSEY], ids=['inextensible', 'jersey'])
+def test_a_hand_holds_its_vertex_where_it_is_within_reach(material):
+    cloth = hanging(**material)
+    x0, y0 = cloth.pos[2 * BOTTOM], cloth.pos[2 * BOTTOM + 1]
+    pull(cloth, BOTTOM, 0.1, 0.05, hold=30)
+    # Swung aside and up, within reach: a load the hand can hold, and the vertex rests where the
+    # hand is (each step's push makes up for what the cloth took back in the last).
+    assert math.hypot(cloth.pos[2 * BOTTOM] - x0 - 0.1, cloth.pos[2 * BOTTOM + 1] - y0 - 0.05) < 1e-3
+
+
+def test_a_compliant_cloth_is_pulled_only_as_hard_as_the_hand_can():
+    cloth = hanging(**JERSEY)
+    pull(cloth, BOTTOM, 0.0, -0.5, hold=60)
+    # Jersey stretches, but a hand of HAND_FORCE times the cloth's weight takes the vertex only
+    # part of the way: the column above it carries that force, each link stretched
+    # F compliance / spacing plus the weight below it.
+    weight = N * N * 0.2 * H * H * 9.81
+    most = sim.HAND_FORCE * weight / 500 / H + 0.2 * 9.81 * 1.0 / 500
+    r = N - 2
+    a, b = r * N + N // 2, (r + 1) * N + N // 2
+    link = math.hypot(cloth.pos[2 * b] - cloth.pos[2 * a], cloth.pos[2 * b + 1] - cloth.pos[2 * a + 1])
+    assert link / H - 1 < 1.2 * most, (link / H - 1, most)
+    y0 = -(N - 1) * H
+    assert -0.5 < cloth.pos[2 * BOTTOM + 1] - y0 < -0.05
+
+
+@pytest.mark.parametrize('material', [{}, JERSEY], ids=['inextensible', 'jersey'])
+@pytest.mark.parametrize('dx, dy', [(0.0, -1.0), (0.0, 1.0), (1.0, 0.0), (-0.7, -0.7)])
+@pytest.mark.parametrize('distance, limit', [(0.2, 3.0), (0.5, 5.0)])
+def test_letting_go_after_a_pull_flings_nothing(material, dx, dy, distance, limit):
+    cloth = hanging(**material)
+    pull(cloth, BOTTOM, dx * distance, dy * distance, hold=30)
+    fastest, rise = let_go(cloth, BOTTOM)
+    assert fastest < limit, fastest
+    assert rise < RISE, rise
+
+
+def test_without_the_let_go_window_a_stretched_cloth_snaps_back(monkeypatch):
+    # The tests above can fail: a compliant cloth pulled down and let go snaps back when nothing
+    # returns its stretch slowly.
+    def fastest():
+        cloth = hanging(**JERSEY)
+        pull(cloth, BOTTOM, 0.0, -0.5, hold=30)
+        return let_go(cloth, BOTTOM)[0]
+    calm = fastest()
+    monkeypatch.setattr(sim, 'LET_GO_SLACK', 1e9)
+    snap = fastest()
+    assert snap > 2 * calm, (snap, calm)
+
+
+@given(k=st.integers(0, N * N - 1), angle=st.floats(0, 2 * math.pi), distance=st.sampled_from([0.2, 0.5]),
+       hold=st.sampled_from([0, 30]), compliant=st.booleans())
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+def test_random_pulls_fling_nothing(k, angle, distance, hold, compliant):
+    cloth = hanging(**(JERSEY if compliant else {}))
+    if cloth.pinned[k] == 1:
+        return
+    pull(cloth, k, distance * math.cos(angle), distance * math.sin(angle), hold=hold)
+    fastest, rise = let_go(cloth, k)
+    assert fastest < (3.0 if distance == 0.2 else 5.0), fastest
+    assert rise < RISE, rise
+
+
+def test_a_tap_moves_nothing():
+    touched, untouched = hanging(**JERSEY), hanging(**JERSEY)
+    k = (N // 2) * N + N // 2
+    grab(touched, k, touched.pos[2 * k], touched.pos[2 * k + 1])
+    release(touched, k)
+    for _ in range(60):
+        frame(touched)
+        frame(untouched)
+    # (The settled cloth still creeps by micrometres; the tapped vertex starts from rest.)
+    assert max(abs(a - b) for a, b in zip(touched.pos, untouched.pos)) < 1e-5
+
+
+def test_the_let_go_window_closes():
+    cloth = hanging(**JERSEY)
+    pull(cloth, BOTTOM, 0.0, -0.3)
+    release(cloth, BOTTOM)
+    frame(cloth)
+    assert cloth.let_go
+    for _ in range(120):
+        frame(cloth)
+    assert not cloth.let_go
 
 
 def flick(speed, **extra):
@@ -81,67 +203,9 @@ def flick(speed, **extra):
 @pytest.mark.parametrize('speed', [1.0, 3.0, 10.0])
 def test_a_flick_still_throws_the_cloth(speed, monkeypatch):
     # A free grid of structural edges is a mechanism: it follows a hand partly by shearing, so
-    # it may fly slower than the hand or, whipped, faster (measured 0.46 to 1.54 times its
-    # speed). What letting go must not do is take momentum out of the throw.
+    # it may fly slower than the hand or, whipped, faster. What letting go must not do is take
+    # momentum out of the throw: the let-go window slows the cloth's motion relative to its mean.
     thrown = flick(speed)
     assert 0.3 * speed < thrown < 2.0 * speed, (speed, thrown)
-    monkeypatch.setattr(sim, 'RELIEVE_PASSES', 0)
-    assert flick(speed) == pytest.approx(thrown, rel=0.02)
-
-
-def test_relieve_runs_only_when_a_vertex_is_let_go_and_never_for_compliant_edges(
-        monkeypatch):
-    calls = []
-    monkeypatch.setattr(sim, 'relieve', lambda *args: calls.append(args[-1]) or 0)
-    monkeypatch.setattr(sim, 'relieve_cells', lambda *args: 0)
-    cloth = hanging()
-    k = N * N - 1
-    assert calls == []                    # 120 frames, nothing changed: never
-    pin(cloth, k)                         # fixing a vertex reveals no stretch (and relieving
-    grab(cloth, k - 1, 0.9, -1.3)         # there would steal a hand's yank from the cloth)
-    frame(cloth)
-    assert calls == []
-    release(cloth, k - 1)                 # letting go does: once, at the next step
-    frame(cloth)
-    frame(cloth)
-    assert len(calls) == 1                # (the stub reports nothing left to relieve)
-    unpin(cloth, k)
-    frame(cloth)
-    assert len(calls) == 2
-    soft = hanging(compliance=1e-3, tethers=False)
-    calls.clear()
-    pin(soft, k)
-    unpin(soft, k)
-    frame(soft)
-    assert calls == []                    # a compliant cloth's stretch is its material's
-
-
-def strain_while_pulled(cloth, dx, dy):
-    """Pull the bottom-middle vertex (dx, dy) beyond where it hangs and hold it: the largest
-    strain over the hold."""
-    k = (N - 1) * N + N // 2
-    x0, y0 = cloth.pos[2 * k], cloth.pos[2 * k + 1]
-    grab(cloth, k, x0, y0)
-    worst = 0.0
-    for f in range(120):
-        t = min(1.0, f / 60.0)
-        move(cloth, k, x0 + dx * t, y0 + dy * t)
-        frame(cloth)
-        cloth.measure()
-        worst = max(worst, cloth.max_strain)
-    return worst
-
-
-@pytest.mark.parametrize('dx, dy', [(0.0, -0.3), (1.0, -1.5)])
-def test_a_hand_pulling_beyond_reach_stretches_the_cloth_evenly(dx, dy, monkeypatch):
-    # The tethers stretch with the hand (tethers.over_reach), so the edges share the stretch
-    # out as the seed's cloth does, instead of gathering it where the vertices tied to the
-    # hand meet those tied to the pins.
-    tethered = strain_while_pulled(hanging(), dx, dy)
-    seed = strain_while_pulled(hanging(solver='jakobsen'), dx, dy)
-    assert tethered <= 1.2 * seed, (tethered, seed)
-    monkeypatch.setattr(sim, 'over_reach', lambda *args: 1.0)
-    unscaled = strain_while_pulled(hanging(), dx, dy)
-    # Measured: 1.56 against 0.38 for the 0.3 m pull, 6.9 against 3.7 for the 1.5 m one (with
-    # the stretch unscaled the line solves run too, and share out a little of it).
-    assert unscaled > 1.5 * tethered, (unscaled, tethered)
+    monkeypatch.setattr(sim, 'LET_GO_SLACK', 1e9)
+    assert flick(speed) == pytest.approx(thrown, rel=1e-6)

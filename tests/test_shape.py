@@ -53,9 +53,9 @@ def hung_at(frame, **keys):
     return cloth
 
 
-def disturbed_scene(vertex, path, **keys):
+def disturbed_scene(vertex, path, fixture=True, **keys):
     scene = shape.hang_scene(**keys)
-    scene['actions'] = shape.gesture_actions(vertex, path)
+    scene['actions'] = shape.gesture_actions(vertex, path, fixture=fixture)
     return scene
 
 
@@ -96,8 +96,10 @@ def test_without_parallelogram_cells_the_flicked_cloth_stays_folded():
 
 @settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(vertex=st.integers(shape.COLS, shape.COLS * shape.ROWS - 1),
-       dx=st.floats(-2.0, 2.0), dy=st.floats(-2.0, 2.0), frames=st.integers(1, 30))
-def test_the_cloth_comes_back_after_random_throws(vertex, dx, dy, frames):
+       dx=st.floats(-2.0, 2.0), dy=st.floats(-2.0, 2.0), frames=st.integers(1, 30),
+       fixture=st.booleans())
+def test_the_cloth_comes_back_after_random_throws(vertex, dx, dy, frames, fixture):
     cloth = hung_at(shape.HANG)
     x0, y0 = cloth.pos[2 * vertex], cloth.pos[2 * vertex + 1]
-    check_recovery(disturbed_scene(vertex, shape.straight_path(x0, y0, dx, dy, frames)))
+    check_recovery(disturbed_scene(vertex, shape.straight_path(x0, y0, dx, dy, frames),
+                                   fixture=fixture))

@@ -168,7 +168,10 @@ def test_cuts_through_a_held_vertex_a_pin_and_between_two_pins():
 # ---- tear --------------------------------------------------------------------------------------
 
 def test_a_pull_far_beyond_reach_tears_a_few_edges_a_frame_and_stays_finite():
+    # A dragged pin goes where the hand puts it, however far (a free vertex's hand has a finite
+    # strength and stops where an inextensible cloth can reach: see the next test).
     s = scene(tear=0.3, sleep=False, actions=[
+        {'frame': 30, 'op': 'pin', 'vertex': 44},
         {'frame': 30, 'op': 'grab', 'vertex': 44},
         {'frame': 31, 'op': 'move', 'vertex': 44, 'to': [0.45, -20]}])
     cloth = load(json.dumps(s))
@@ -185,6 +188,19 @@ def test_a_pull_far_beyond_reach_tears_a_few_edges_a_frame_and_stays_finite():
     assert cloth.n_edges < total
     # torn off with the hand: the vertex's piece has no pin, and no tether ties it to one
     assert cloth.anchor[44] == 44
+
+
+def test_a_hand_tears_a_compliant_cloth_but_not_an_inextensible_one():
+    # A hand of finite strength (sim.HAND_FORCE) stretches a compliant cloth as far as its
+    # force takes it, past a tear limit if the material is soft enough, and an inextensible one
+    # not at all.
+    def torn(**keys):
+        s = scene(tear=0.3, sleep=False, actions=[
+            {'frame': 30, 'op': 'grab', 'vertex': 44},
+            {'frame': 31, 'op': 'move', 'vertex': 44, 'to': [0.45, -3]}], **keys)
+        return len(edges_of(s)) - len(result(s, 150)['edges'])
+    assert torn(density=0.2, compliance=0.05) > 0
+    assert torn() == 0
 
 
 @settings(max_examples=40, deadline=None)
@@ -220,7 +236,8 @@ def test_a_tear_or_a_cut_wakes_a_sleeping_cloth():
 
 
 def test_tear_is_a_live_setting_too():
-    acts = [{'frame': 10, 'op': 'grab', 'vertex': 44},
+    acts = [{'frame': 10, 'op': 'pin', 'vertex': 44},
+            {'frame': 10, 'op': 'grab', 'vertex': 44},
             {'frame': 11, 'op': 'move', 'vertex': 44, 'to': [0.45, -5]},
             {'frame': 40, 'op': 'set', 'scene': {'tear': 0.2}}]
     out = result(scene(actions=acts, sleep=False), 39)
