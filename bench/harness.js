@@ -250,5 +250,83 @@
     M.step(r, 30, 0);
     return (cx() - c0) / 0.5;
   };
+  // ---- release and strain fields (issue #21): the page's own presets -----------------------
+
+  // A preset as the page makes it (webgl/scenes.js), with some of its panel's settings.
+  B.preset = function (name, params) { return JSON.stringify(window.clothScenes.make(name, params).scene); };
+
+  // The largest frame displacement / dt of any vertex between two position copies.
+  function frameSpeed(a, b, n, dt) {
+    let v = 0;
+    for (let k = 0; k < n; k++) {
+      const s = Math.hypot(b[2 * k] - a[2 * k], b[2 * k + 1] - a[2 * k + 1]);
+      if (s > v) v = s;
+    }
+    return v / dt;
+  }
+
+  function highest(cl) {
+    let y = -Infinity;
+    for (let k = 0; k < cl.n_verts; k++) if (cl.pos[2 * k + 1] > y) y = cl.pos[2 * k + 1];
+    return y;
+  }
+
+  // A pull as a person makes it: the scene settles `settle` frames, vertex k is grabbed where it
+  // is, carried (dx, dy) over 40 frames, held `hold` frames and let go. Returns the fastest
+  // vertex (frame displacement / dt) over the 3 frames after, the highest point over the next
+  // second above the highest pin (or the cloth's highest point at the release, when the hand
+  // lifted it higher), and the largest strain while held.
+  B.pull = function (text, settle, k, dx, dy, hold) {
+    const r = M.run(clothCore.load(text)), cl = r.cloth, ops = r.ops, n = cl.n_verts;
+    M.step(r, settle, 0);
+    let pinTop = -Infinity;
+    for (let j = 0; j < n; j++) if (cl.pinned[j] === 1 && cl.pos[2 * j + 1] > pinTop) pinTop = cl.pos[2 * j + 1];
+    const x0 = cl.pos[2 * k], y0 = cl.pos[2 * k + 1];
+    ops.grab(k, x0, y0);
+    let held = 0;
+    for (let f = 1; f <= 40 + hold; f++) {
+      const t = Math.min(1, f / 40);
+      ops.move(k, x0 + dx * t, y0 + dy * t);
+      M.step(r, 1, 0);
+      ops.measure();
+      held = Math.max(held, cl.max_strain);
+    }
+    // Lifted above its pins by the hand, a cloth is let go from there: the ceiling is the
+    // higher of the pins and the cloth's highest point at the release.
+    const ceiling = Math.max(pinTop, highest(cl));
+    ops.release(k);
+    let fastestAfter = 0, top = -Infinity;
+    let before = Float64Array.from(cl.pos);
+    for (let f = 0; f < 60; f++) {
+      M.step(r, 1, 0);
+      if (f < 3) fastestAfter = Math.max(fastestAfter, frameSpeed(before, cl.pos, n, cl.dt));
+      before.set(cl.pos);
+      top = Math.max(top, highest(cl));
+    }
+    return { fastest: fastestAfter, above: top - ceiling, held: held, finite: Number.isFinite(top) };
+  };
+
+  // A tap on vertex k of the settled scene: how far any vertex then is from where the same
+  // scene puts it without the tap, a frame later.
+  B.tap = function (text, settle, k) {
+    const a = M.run(clothCore.load(text)), b = M.run(clothCore.load(text));
+    M.step(a, settle, 0);
+    M.step(b, settle, 0);
+    a.ops.grab(k, a.cloth.pos[2 * k], a.cloth.pos[2 * k + 1]);
+    a.ops.release(k);
+    M.step(a, 1, 0);
+    M.step(b, 1, 0);
+    let d = 0;
+    for (let j = 0; j < 2 * a.cloth.n_verts; j++) d = Math.max(d, Math.abs(a.cloth.pos[j] - b.cloth.pos[j]));
+    return d;
+  };
+
+  // The settled positions of a scene after `frames` frames, and the fastest vertex then (m/s).
+  B.rest = function (text, frames) {
+    const r = M.run(clothCore.load(text)), cl = r.cloth;
+    M.step(r, frames, 0);
+    return { pos: Array.from(cl.pos), speed: fastest(cl) };
+  };
+
   return true;
 })();

@@ -5,7 +5,7 @@ returns, and the parity tests compare its CPython and browser results number for
 """
 
 from cloth.host import to_json, kind_of, is_finite, parse_json
-from cloth.scene import parse_scene, settings_scene, SceneError, fail, MAX_FRAMES
+from cloth.scene import parse_scene, settings_scene, SceneError, fail, MAX_FRAMES, MATERIALS, DEFAULT_MATERIAL
 from cloth.sim import Cloth, frame, measure, grab, move, release, pin, unpin, retune, cut
 
 # A trace holds frames x vertices points. The CLI streams it (cloth/__main__.py: memory
@@ -27,6 +27,12 @@ def check(scene_json_text, panel=-1):
 def build(scene):
     """A checked Scene (parse_scene) -> a Cloth: the page checks its own limits between."""
     return Cloth(scene)
+
+
+def materials():
+    """The named fabrics of the page's Material control (scene.MATERIALS: name, label,
+    density kg/m^2, stiffness N/m) and the presets' own, declared once for both runtimes."""
+    return [MATERIALS, DEFAULT_MATERIAL]
 
 
 def set_settings(cloth, keys_json_text):

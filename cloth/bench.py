@@ -844,8 +844,27 @@ def main(argv=None):
     ap.add_argument('--gestures', action='store_true',
                     help='only the gestures: pulling beyond reach, letting go, flicking '
                          '(OUT/gestures.md)')
+    ap.add_argument('--physics', action='store_true',
+                    help='only the release table and the strain fields at rest, on the page\'s '
+                         'presets (OUT/physics.md, OUT/physics.json; with --quick: 10x10 and 30x30)')
     args = ap.parse_args(argv)
     progress = Progress()
+    if args.physics:
+        from cloth import bench_physics
+        try:
+            md, result = bench_physics.run(args.quick, progress, open_page)
+        except BenchError as err:
+            sys.stderr.write('error: %s\n' % err)
+            return 1
+        os.makedirs(args.out, exist_ok=True)
+        name = 'physics' + (QUICK_SUFFIX if args.quick else '')
+        with open(os.path.join(args.out, name + '.md'), 'w', encoding='utf-8') as f:
+            f.write(md)
+        with open(os.path.join(args.out, name + '.json'), 'w', encoding='utf-8') as f:
+            json.dump(json_safe(result), f, indent=1, allow_nan=False)
+            f.write('\n')
+        sys.stdout.write(md)
+        return 0
     if args.gestures:
         try:
             md = gestures(progress)

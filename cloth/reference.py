@@ -110,22 +110,8 @@ def elastic_chain(n_links, link, span, node_weight, compliance):
     return pts, tensions
 
 
-def elastic_two_corners(cols, rows, spacing, mass, compliance, span, g=9.81):
-    """A grid of compliant structural edges hung from its two top corners `span` apart
-    (vertex k = r * cols + c). Returns (positions, down_strains, right_strains): down_strains
-    [r][c] for the link below (r, c), right_strains [r][c] for the link to its right.
-
-    Every column hangs straight down from its top vertex, each link carrying the vertices below
-    it (as `hanging_column`); the top row is an elastic chain whose inner joints each carry a
-    whole column (rows vertices); every lower row is the top row moved down by the same column
-    stretch, so its links keep their rest length and carry nothing. Each vertex is then in
-    balance: a lower one between its two column links, which differ by its weight, and a top one
-    between its two row links and its column."""
-    top, tensions = elastic_chain(cols - 1, spacing, span, rows * mass * g, compliance)
-    column = hanging_column(rows, spacing, mass, compliance, g)
-    col_strains = hanging_column_strains(rows, spacing, mass, compliance, g)
-    positions = [(top[c][0], top[c][1] + column[r][1]) for r in range(rows) for c in range(cols)]
-    down = [[col_strains[r] for c in range(cols)] for r in range(rows - 1)]
-    right = [[(compliance * tensions[c] / spacing if r == 0 else 0.0) for c in range(cols - 1)]
-             for r in range(rows)]
-    return positions, down, right
+# A compliant grid hung from two corners has no such closed form: its rows cannot all be copies
+# of the top row (a lower row whose links had the top row's stretched length would carry the
+# same tension, and its vertices would not balance), so the load spreads over rows in a way
+# only a 2-D solve gives. The benchmark holds that scene against the same run at 8x the
+# substeps and at other grid sizes instead.

@@ -45,6 +45,17 @@ COMPARE_KEYS = ['solver', 'substeps', 'iterations', 'tethers', 'tolerance', 'com
                 'shear', 'damping', 'cells', 'lines', 'sleep', 'max_speed', 'tear', 'density']
 MAX_TEAR = 1e6
 MAX_PANELS = 4
+# The page's Material control: named fabrics, each [name, label, density in kg/m^2, stretch
+# stiffness in N/m (the scene's compliance is its inverse; 0: inextensible)]. Jersey is the
+# presets' own: hanging 1.5 m under its own weight it stretches 0.6% at the pins (strain =
+# density g height / stiffness), visible in the colours. The inextensible choice keeps
+# jersey's weight, so that switching changes only the stretch. Stiffnesses are those of light
+# fabrics at small strain (a woven's is set by its yarns, a knit's by its loops).
+MATERIALS = [['inextensible', 'Inextensible', 0.2, 0.0],
+             ['cotton', 'Cotton (woven)', 0.15, 5000.0],
+             ['jersey', 'Jersey (knit)', 0.2, 500.0],
+             ['spandex', 'Spandex (stretch knit)', 0.2, 100.0]]
+DEFAULT_MATERIAL = 'jersey'
 
 
 class SceneError(Exception):
@@ -113,6 +124,7 @@ class Scene:
         self.lines = False
         self.tear = 0.0        # the strain past which an edge breaks; 0: no tearing
         self.mass = 1.0        # kg a vertex: density * spacing^2, or 1 kg without a density
+        self.density = 0.0     # kg/m^2 as the scene gave it; 0: none (1 kg a vertex)
         self.actions = []      # list of Action, sorted by frame (stable)
         self.frames = -1       # the frames a recording ran for; -1: not given
         # The scene's JSON object without NOT_SETTINGS: what a `set` action merges its keys
@@ -303,6 +315,7 @@ def scene_from_object(obj):
         # what they meant).
         density = number(obj['density'], 'density', 0.0, 1e4, True,
                          'in (0, 10000] kg/m^2 (the cloth\'s mass per area)')
+        s.density = density
         s.mass = density * s.spacing * s.spacing
         if s.mass < 1e-12:
             fail('density: density * spacing^2 (a vertex\'s mass) must be at least 1e-12 kg')

@@ -82,6 +82,15 @@ HAND_ACCEL = 100.0
 # could not take out) then returns without being turned into a fling, while the cloth's own
 # motion (a throw: its momentum) stays.
 LET_GO_SLACK = 0.5
+# The window opens only where there is stretch to return: a hand of finite strength let go
+# after it held its vertex through a frame (it may have pulled beyond where it could take it,
+# or pushed the cloth into folds that its cells, which leave a gripped vertex alone, then
+# snap open: measured 4.4 m/s after a 0.2 m push up), or a cloth with an edge stretched or
+# squashed by more than LET_GO_STRAIN (a pin dragged beyond reach, unpinned). Anything else
+# let go (a tap, a rested corner unpinned) leaves the motion as physics makes it: the window's
+# bound, the speed before plus g t, would slow a swinging chain's tip, which its tension
+# speeds up faster than gravity (measured: a tap on a swinging chain moved it 0.34 m).
+LET_GO_STRAIN = 0.05
 
 
 class Cloth:
@@ -779,7 +788,9 @@ def rest_at(cloth, k):
 
 def refresh(cloth, k):
     """inv_mass follows pinned and held, the hands' grips follow the held vertices, the tether
-    anchors the fixed set; a vertex that changes state starts from rest."""
+    anchors the fixed set. A vertex that becomes fixed or free starts from rest; one that a
+    hand of finite strength takes or lets go keeps its speed (a tap on a moving cloth changes
+    nothing)."""
     cloth.asleep = False
     cloth.still_frames = 0
     was_fixed = cloth.inv_mass[k] == 0.0
@@ -787,7 +798,8 @@ def refresh(cloth, k):
     set_mass(cloth, k)
     if was_fixed != (cloth.inv_mass[k] == 0.0):
         cloth.anchors_stale = True
-    rest_at(cloth, k)
+    if was_fixed or cloth.inv_mass[k] == 0.0:
+        rest_at(cloth, k)
 
 
 def set_mass(cloth, k):
@@ -872,10 +884,11 @@ def gather_grip(cloth, k):
     return kept
 
 
-def let_go(cloth, k):
-    """Vertex k has just been let go (released or unpinned): if it is free now, the let-go
-    window (LET_GO_SLACK) starts with the next step."""
-    if cloth.pinned[k] == 0 and cloth.held[k] == 0:
+def let_go(cloth, k, pulled):
+    """Vertex k has just been let go (released or unpinned): if it is free now and there is
+    stretch to return (`pulled`: a hand held it through a frame; or an edge strained beyond
+    LET_GO_STRAIN), the let-go window (LET_GO_SLACK) starts with the next step."""
+    if cloth.pinned[k] == 0 and cloth.held[k] == 0 and (pulled or most_strain(cloth) > LET_GO_STRAIN):
         cloth.let_go_pending = True
 
 
@@ -904,13 +917,30 @@ def move(cloth, k, x, y):
 
 
 def release(cloth, k):
-    """Let go: a pinned vertex stays pinned where it was left, a free one falls from rest."""
+    """Let go: a pinned vertex stays pinned where it was left; a free one goes on with the
+    speed it had in a hand of finite strength, from rest after a kinematic hold."""
     check_vertex(cloth, k)
+    pulled = cloth.held[k] == 1 and cloth.grip[k] == k and cloth.hands_last_frame
     if cloth.held[k] == 1:
         cloth.n_held -= 1
     cloth.held[k] = 0
     refresh(cloth, k)
-    let_go(cloth, k)
+    let_go(cloth, k, pulled)
+
+
+def most_strain(cloth):
+    """The largest |strain| of any edge (edges broken are removed, break_marked)."""
+    pos = cloth.pos
+    worst = 0.0
+    for e in range(cloth.n_edges):
+        a = cloth.edge_a[e] + cloth.edge_a[e]
+        b = cloth.edge_b[e] + cloth.edge_b[e]
+        dx = pos[b] - pos[a]
+        dy = pos[b + 1] - pos[a + 1]
+        strain = abs(math.sqrt(dx * dx + dy * dy) / cloth.rest[e] - 1.0)
+        if strain > worst:
+            worst = strain
+    return worst
 
 
 def pin(cloth, k):
@@ -923,7 +953,7 @@ def unpin(cloth, k):
     check_vertex(cloth, k)
     cloth.pinned[k] = 0
     refresh(cloth, k)
-    let_go(cloth, k)
+    let_go(cloth, k, False)
 
 
 def toggle_pin(cloth, k):

@@ -64,6 +64,7 @@
     reset: function () { reset(); },
     preset: function (name) { usePreset(name); },
     solver: function (name) { setSolver(name); },
+    material: function (name) { setMaterial(name); },
     param: function (key, raw) { setParam(key, raw); },
     mode: function (m) { setColorMode(m || (s.mode === 'strain' ? 'stress' : 'strain')); },
     scaleMode: function (m) { setScaleMode(m || (s.scaleMode === 'auto' ? 'fixed' : 'auto')); },
@@ -102,7 +103,8 @@
   function paramsOf(cloth) {
     return { cols: cloth.cols, rows: cloth.rows, iterations: cloth.iterations,
              substeps: cloth.substeps, gravity: cloth.scene.gravity_y,
-             damping: cloth.scene.damping, solver: cloth.scene.solver, tear: cloth.tear };
+             damping: cloth.scene.damping, solver: cloth.scene.solver, tear: cloth.tear,
+             material: scenes.materialOf(cloth.scene.density, cloth.scene.compliance) };
   }
 
   // The page's limits for a scene and each of its panels (a panel costs what its scene
@@ -382,6 +384,13 @@
     retune(Object.assign({}, s.params, { solver: name, substeps: d.substeps, iterations: d.iterations }), '');
   }
 
+  // A named fabric: its density and stiffness, set like every setting (recorded as a `set` of
+  // density and compliance).
+  function setMaterial(name) {
+    if (!own(scenes.MATERIALS, name)) { ui.setParams(s.params); return; }
+    retune(Object.assign({}, s.params, { material: name }), '');
+  }
+
   // The scene with the settings of p (those the panel shows) written into it.
   function withSettings(obj, p) {
     const out = Object.assign({}, obj);
@@ -391,6 +400,10 @@
     out.damping = p.damping;
     out.gravity = [Array.isArray(obj.gravity) ? obj.gravity[0] : 0, p.gravity];
     if (p.tear > 0) out.tear = p.tear; else delete out.tear;
+    if (own(scenes.MATERIALS, p.material)) {
+      out.density = scenes.MATERIALS[p.material].density;
+      out.compliance = scenes.MATERIALS[p.material].compliance;
+    }
     return out;
   }
 
@@ -405,6 +418,10 @@
     if (p.damping !== s.params.damping) keys.damping = p.damping;
     if (p.gravity !== s.params.gravity) keys.gravity = [s.base.scene.gravity_x, p.gravity];
     if (p.tear !== s.params.tear) keys.tear = p.tear > 0 ? p.tear : null;
+    if (p.material !== s.params.material && own(scenes.MATERIALS, p.material)) {
+      keys.density = scenes.MATERIALS[p.material].density;
+      keys.compliance = scenes.MATERIALS[p.material].compliance;
+    }
     const obj = withSettings(s.sceneObj, p);
     try {
       const limit = limitOf(obj);
@@ -631,12 +648,17 @@
         const pad = 24;   // a finger's width around the vertex
         for (let j = 0; j < s.panels.length && !under; j++) {
           const c = s.panels[j].cloth, d = s.panels[j].draw;
+          // the held vertex, and its hand (the pointer), which a hand of finite strength's
+          // vertex may lag behind or stop short of
           for (let k = 0; k < c.n_verts && !under; k++) {
             if (c.held[k] === 0) continue;
-            const p = d.toCanvas(c.pos[2 * k], c.pos[2 * k + 1]);
-            const x = canvasBox[0] + p[0], y = canvasBox[1] + p[1];
-            under = x > overlayBox[4 * i] - pad && x < overlayBox[4 * i + 2] + pad &&
-                    y > overlayBox[4 * i + 1] - pad && y < overlayBox[4 * i + 3] + pad;
+            for (let which = 0; which < 2 && !under; which++) {
+              const at = which === 0 ? c.pos : c.target;
+              const p = d.toCanvas(at[2 * k], at[2 * k + 1]);
+              const x = canvasBox[0] + p[0], y = canvasBox[1] + p[1];
+              under = x > overlayBox[4 * i] - pad && x < overlayBox[4 * i + 2] + pad &&
+                      y > overlayBox[4 * i + 1] - pad && y < overlayBox[4 * i + 3] + pad;
+            }
           }
         }
       }
@@ -824,7 +846,8 @@
       touched();
     },
     move: function (k, x, y) {
-      const pos = s.cloth.pos, x0 = pos[2 * k], y0 = pos[2 * k + 1];
+      // where the hand is (a hand of finite strength's vertex may be short of it)
+      const hand = s.cloth.target, x0 = hand[2 * k], y0 = hand[2 * k + 1];
       if (x === x0 && y === y0) return;       // a hand held still changes nothing
       takeOver();
       for (let i = 0; i < s.panels.length; i++) s.panels[i].run.ops.move(k, x, y);
@@ -916,11 +939,13 @@
 
   // ---- test seam ----------------------------------------------------------
 
-  // {positions: [[x, y]...] metres, screen: [[clientX, clientY]...], pinned, held} of panel i.
+  // {positions: [[x, y]...] metres, screen: [[clientX, clientY]...], pinned, held, hands} of
+  // panel i; hands[k]: for a held vertex, where its hand is (clientX, clientY: the pointer's
+  // point in the cloth, which a hand of finite strength takes its vertex toward), else null.
   function stateOf(i) {
     const p = s.panels[i], c = p.cloth, n = c.n_verts, pos = c.pos;
     const r = canvas.getBoundingClientRect();
-    const out = { positions: [], screen: [], pinned: [], held: [] };
+    const out = { positions: [], screen: [], pinned: [], held: [], hands: [] };
     for (let k = 0; k < n; k++) {
       const x = pos[2 * k], y = pos[2 * k + 1];
       out.positions.push([x, y]);
@@ -930,6 +955,12 @@
       }
       out.pinned.push(c.pinned[k] !== 0);
       out.held.push(c.held[k] !== 0);
+      if (c.held[k] !== 0 && renderer.ok) {
+        const q = p.draw.toCanvas(c.target[2 * k], c.target[2 * k + 1]);
+        out.hands.push([r.left + q[0], r.top + q[1]]);
+      } else {
+        out.hands.push(null);
+      }
     }
     return out;
   }
@@ -957,7 +988,7 @@
         if (s.compare.length) Object.assign(obj, s.compare[i]);
         return { label: measure.label(p.cloth), scene: JSON.stringify(obj), positions: st.positions,
                  screen: st.screen, rms_strain: p.cloth.rms_strain, max_strain: p.cloth.max_strain,
-                 sim_ms: p.simMs, pinned: st.pinned, held: st.held, max_diff: p.cloth.max_diff,
+                 sim_ms: p.simMs, pinned: st.pinned, held: st.held, hands: st.hands, max_diff: p.cloth.max_diff,
                  max_stress: p.cloth.max_stress };
       });
     },

@@ -45,6 +45,9 @@ window.clothCore = (function (api, modules) {
     setSettings: wrap(function (cloth, text) { return api.set_settings(cloth, text); }),
     // dropActionsAfter(cloth, frame): forget the script after that frame (a person took over).
     dropActionsAfter: function (cloth, f) { api.drop_actions_after(cloth, f); },
+    // materials() -> {list: [[name, label, density kg/m^2, stiffness N/m], ...], preset: name}
+    // (cloth/scene.py MATERIALS: the Material control's fabrics, declared there once).
+    materials: function () { const m = api.materials(); return { list: m[0], preset: m[1] }; },
     message: message,
     api: api,
   };

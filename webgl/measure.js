@@ -54,7 +54,8 @@ window.clothMeasure = (function () {
     if (d.cells) parts.push('cells');
     if (d.lines) parts.push('lines');
     if (d.shear) parts.push('shear');
-    if (d.compliance > 0) parts.push('compliance ' + d.compliance);
+    // The seed's method ignores compliance: only a solver that honours it says it.
+    if (d.compliance > 0 && d.solver === 'xpbd') parts.push('compliance ' + d.compliance);
     if (d.tolerance > 0) parts.push('tol ' + d.tolerance);
     if (d.tear > 0) parts.push('tear ' + d.tear);
     return parts.join(', ');

@@ -91,6 +91,32 @@ window.clothUI = (function () {
     el.bannerClose.addEventListener('click', function () { ui.clearError(); });
     el.preset.addEventListener('change', function () { h.preset(el.preset.value); });
     $('solver').addEventListener('change', function () { h.solver($('solver').value); });
+    // The Material menu and its help rows, from the core's list of fabrics.
+    const fabrics = window.clothScenes.MATERIALS;
+    Object.keys(fabrics).forEach(function (name) {
+      const m = fabrics[name];
+      const o = document.createElement('option');
+      o.value = name;
+      o.textContent = m.label;
+      o.title = m.density + ' kg/m², ' + (m.stiffness > 0 ? m.stiffness + ' N/m' : 'does not stretch');
+      $('material').appendChild(o);
+      const row = document.createElement('tr');
+      const what = document.createElement('td');
+      const th = document.createElement('th');
+      th.textContent = m.label;
+      what.textContent = m.density + ' kg/m²; ' + (m.stiffness > 0
+        ? 'stretch stiffness ' + m.stiffness + ' N/m (compliance ' + m.compliance + ' m/N)'
+        : 'no stretch (compliance 0)');
+      row.appendChild(th);
+      row.appendChild(what);
+      $('help-materials').appendChild(row);
+    });
+    const custom = document.createElement('option');
+    custom.value = 'custom';
+    custom.disabled = true;
+    custom.textContent = 'Custom (scene)';
+    $('material').appendChild(custom);
+    $('material').addEventListener('change', function () { h.material($('material').value); });
     params.forEach(function (key) {
       $(key).addEventListener('change', function () { h.param(key, fieldText($(key))); });
     });
@@ -181,6 +207,7 @@ window.clothUI = (function () {
           // tear 0 is no tearing: the field shows its placeholder, "off"
           $(key).value = key === 'tear' && !(p[key] > 0) ? '' : String(p[key]);
         });
+        if (p.material !== undefined) $('material').value = p.material;
       },
       setCutTool: function (on) {
         $('btn-cut').setAttribute('aria-pressed', on ? 'true' : 'false');

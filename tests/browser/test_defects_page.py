@@ -66,7 +66,9 @@ def test_a_field_where_empty_means_off_tells_letters_from_empty(open_page):
 def test_a_drag_faster_than_the_cloth_can_follow_is_not_called_unstable(open_page):
     pg = open_page()
     pg.js('(t) => clothApp.loadScene(t)', json.dumps(
-        {'cols': 20, 'rows': 20, 'spacing': 0.05, 'pins': [0, 19], 'max_speed': 5, 'damping': 1}))
+        {'cols': 20, 'rows': 20, 'spacing': 0.05, 'pins': [0, 19, 19 * 20 + 10], 'max_speed': 5, 'damping': 1}))
+    # A pinned vertex goes where it is dragged, at once (a free one's hand of finite strength
+    # takes it there at most HAND_SPEED): the cloth behind it is yanked faster than max_speed.
     pg.js('clothApp.setPaused(true)')
     st = pg.state()
     x, y = st['screen'][19 * 20 + 10]
@@ -262,7 +264,7 @@ def test_a_grid_change_keeps_pins_at_their_row_and_column(open_page):
 
 
 def test_a_persons_pin_changes_survive_any_number_of_grid_changes(open_page):
-    pg = open_page()                                    # the curtain: every 4th top vertex pinned
+    pg = open_page()                                    # the curtain: its top row pinned (a rod)
     pg.js('clothApp.setPaused(true)')
     st = pg.state()
     pg.mouse.click(*st['screen'][4], button='right')              # unpin (0, 4)
@@ -276,7 +278,7 @@ def test_a_persons_pin_changes_survive_any_number_of_grid_changes(open_page):
         set_input(pg, '#rows', str(rows))
         pinned = pg.state()['pinned']
         assert not pinned[4] and pinned[10 * cols + 2], (cols, rows)
-        assert sum(pinned) == len(range(0, cols, 4)) + (0 if (cols - 1) % 4 == 0 else 1), (cols, rows)
+        assert sum(pinned) == cols, (cols, rows)       # the rod but (0, 4), and (10, 2)
 
 
 def test_scripted_pins_are_not_taken_for_a_persons(open_page):
@@ -308,7 +310,7 @@ def test_a_held_vertex_stays_held_through_a_grid_change(open_page):
     x0, y0 = st['screen'][k2]
     pg.mouse.move(x + 40, y - 30)
     st = pg.state()
-    assert abs(st['screen'][k2][0] - (x0 + 40)) < 0.01 and abs(st['screen'][k2][1] - (y0 - 30)) < 0.01
+    assert abs(st['hands'][k2][0] - (x0 + 40)) < 0.01 and abs(st['hands'][k2][1] - (y0 - 30)) < 0.01
     pg.mouse.up()
     assert not any(pg.state()['held'])
     # the new recording holds it from frame 0
@@ -461,7 +463,7 @@ def test_the_held_vertex_stays_under_the_pointer_through_a_resize(open_page):
         pg.js('clothApp.advance(3)')
         box = pg.js('() => document.getElementById("view").getBoundingClientRect().toJSON()')
         if box['left'] <= px <= box['right'] and box['top'] <= py <= box['bottom']:
-            assert near(pg.state()['screen'][k], (px, py), 0.01), (size, pg.state()['screen'][k], (px, py))
+            assert near(pg.state()['hands'][k], (px, py), 0.01), (size, pg.state()['hands'][k], (px, py))
         pg.mouse.up()
         pg.js('clothApp.advance(60)')
 
@@ -508,7 +510,7 @@ def test_a_press_near_a_vertex_does_not_move_it(open_page, pointer, offset):
         held = pg.state()['held'].index(True)
         assert pg.state()['positions'] == st['positions']     # nothing moved
         pg.mouse.move(x + 50, y + 20, steps=3)
-        sx, sy = pg.state()['screen'][held]
+        sx, sy = pg.state()['hands'][held]
         assert near((sx - 50, sy - 20), st['screen'][held], 0.01)   # the offset is kept
         pg.mouse.up()
     else:

@@ -222,7 +222,8 @@ def test_the_readme_scene_matches_the_cli_at_every_frame(open_page):
     for f in range(120):
         pg.js('clothApp.advance(1)')
         assert pg.state()['positions'] == trace[f], 'frame %d' % (f + 1)
-    assert trace[74][299] == [1.4, -0.3]
+    # The hand (of finite strength) has taken the corner there, within the cloth's reach.
+    assert abs(trace[74][299][0] - 1.4) < 1e-3 and abs(trace[74][299][1] + 0.3) < 1e-3, trace[74][299]
 
 
 def test_a_move_every_frame_for_10000_frames_replays_exactly(open_page):
