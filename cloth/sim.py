@@ -126,6 +126,7 @@ class Cloth:
         # The hands (HAND_FORCE): where each is, and where it is taking each vertex it holds.
         self.target = f64(2 * n)
         self.aim = f64(2 * n)
+        self.aim_step = f64(2 * n)
         self.hands = i32(n)
         self.n_hands = 0
         # A hand's grip (regrip): the held vertex whose hand holds each vertex (-1: none), its
@@ -482,7 +483,7 @@ def relax(cloth):
     tethered = cloth.use_tethers and cloth.iterations > 0
     if cloth.n_hands > 0:
         drive_hands(pos, cloth.prev, cloth.hands, cloth.n_hands, cloth.grip, cloth.offset,
-                    cloth.target, cloth.aim, cloth.consts)
+                    cloth.target, cloth.aim, cloth.aim_step, cloth.consts)
     cloth.clamped += integrate(pos, cloth.prev, inv_mass, n, cloth.consts, cloth.anchor,
                                cloth.tether, tethered, cloth.held)
     if cloth.use_xpbd:
@@ -917,14 +918,21 @@ def move(cloth, k, x, y):
 
 
 def release(cloth, k):
-    """Let go: a pinned vertex stays pinned where it was left; a free one goes on with the
-    speed it had in a hand of finite strength, from rest after a kinematic hold."""
+    """Let go: a pinned vertex stays pinned where it was left; a free one leaves a hand of
+    finite strength with the hand's velocity (from rest if the hand held still), a kinematic
+    hold from rest."""
     check_vertex(cloth, k)
     pulled = cloth.held[k] == 1 and cloth.grip[k] == k and cloth.hands_last_frame
     if cloth.held[k] == 1:
         cloth.n_held -= 1
     cloth.held[k] = 0
     refresh(cloth, k)
+    if pulled and cloth.pinned[k] == 0:
+        # It leaves the hand with the hand's velocity (a hand held still: from rest, its fall
+        # exact as rest_at makes it), not with what the last push left in pos - prev.
+        i = k + k
+        cloth.prev[i] = cloth.pos[i] - cloth.aim_step[i] + 0.5 * cloth.ax
+        cloth.prev[i + 1] = cloth.pos[i + 1] - cloth.aim_step[i + 1] + 0.5 * cloth.ay
     let_go(cloth, k, pulled)
 
 

@@ -545,7 +545,7 @@ def mark_overstretched(pos, edge_a, edge_b, rest, m, consts, most, best_q, best_
     return found
 
 
-def drive_hands(pos, prev, hands, count, grip, offset, target, aim, consts):
+def drive_hands(pos, prev, hands, count, grip, offset, target, aim, aim_step, consts):
     """Before a step's constraints, the hands (sim.HAND_FORCE). For each vertex in a hand's grip
     (sim.regrip), its own point `aim` moves toward where the hand holds it (the hand's target +
     the vertex's offset) by consts[K_HAND_SHARE] of what is left of the way (1 / the steps left
@@ -554,7 +554,8 @@ def drive_hands(pos, prev, hands, count, grip, offset, target, aim, consts):
     that it lands on the aim, x' = x + (x - x*) + push, the push at most consts[K_HAND_PUSH]:
     the most force the hand has (sim.HAND_FORCE). The constraints that follow may pull it back:
     the next step's push, which makes up for the velocity that left, pulls harder (a hand that
-    holds a load rests where it is held while the load is within its strength)."""
+    holds a load rests where it is held while the load is within its strength). aim_step: how
+    far each aim moved in this step (the hand's velocity times h, for a release)."""
     sqrt = math.sqrt
     share = consts[K_HAND_SHARE]
     most = consts[K_HAND_STEP]
@@ -578,6 +579,8 @@ def drive_hands(pos, prev, hands, count, grip, offset, target, aim, consts):
         ay += gy
         aim[i] = ax
         aim[i + 1] = ay
+        aim_step[i] = gx
+        aim_step[i + 1] = gy
         x = pos[i]
         y = pos[i + 1]
         vx = x - prev[i]
