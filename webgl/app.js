@@ -542,10 +542,13 @@
     s.dirty = true;
   }
 
-  // Auto is the seed's normalisation by the frame's maximum, above a floor: a cloth at rest
-  // has solver noise of up to about 1e-3, which must stay dark, not be painted as strain.
-  // One scale for every panel: the largest of them, so a colour means one strain everywhere.
-  const AUTO_FLOOR = 0.01;
+  // Auto is the seed's normalisation by the frame's maximum, above a floor: solver noise on an
+  // inextensible cloth at rest (1e-7 on a curtain, up to 1e-3 in a slack hang's rows) stays
+  // dark, while a material's own strain (jersey hung 1.5 m: 0.6% at the rod) fills the scale
+  // from the hem to the pins. One scale for every panel: the largest of them, so a colour
+  // means one strain everywhere.
+  const AUTO_FLOOR = 0.002;
+  document.getElementById('auto-floor').textContent = String(AUTO_FLOOR);
 
   function frameMax() {
     let top = 0;
@@ -1017,7 +1020,7 @@
       return {
         webgl: renderer.ok ? renderer.version : 0, lost: !!renderer.lost, restores: renderer.restores || 0,
         drawCalls: renderer.drawCalls || 0, paused: s.paused, mode: s.mode, scaleMode: s.scaleMode,
-        scale: s.scale, fullScale: s.fullScale, frames: s.frames, preset: s.preset, params: s.params,
+        scale: s.scale, fullScale: s.fullScale, autoFloor: AUTO_FLOOR, frames: s.frames, preset: s.preset, params: s.params,
         asleep: !!(s.cloth && allAsleep()), renders: s.renders,
         replay: { playing: s.replayEnd >= 0, end: s.replayEnd, ended: s.replayEnded },
         linkPending: !!s.linkPending, panels: s.panels.length, simMs: simMs, chartLatest: charts.latest(0),

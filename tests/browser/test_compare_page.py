@@ -85,7 +85,7 @@ def test_one_scale_is_the_largest_over_the_panels(open_page):
         pg.js('clothApp.advance(1)')
         ps = panels(pg)
         assert ps[0][key] != ps[1][key]
-        assert pg.info()['scale'] == max(ps[0][key], ps[1][key], 0.01), mode
+        assert pg.info()['scale'] == max(ps[0][key], ps[1][key], pg.info()['autoFloor']), mode
     pg.mouse.up()
 
 

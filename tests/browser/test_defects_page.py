@@ -579,7 +579,7 @@ def test_auto_scale_has_a_floor_that_keeps_noise_dark(open_page):
     pg.js('clothApp.advance(300)')
     info = pg.info()
     cloth_max = pg.js('clothApp.cloth().max_diff')
-    assert cloth_max < 0.01 and info['scale'] == 0.01
+    assert cloth_max < info['autoFloor'] and info['scale'] == info['autoFloor'] == 0.002
     pg.wait_for_timeout(400)
     assert 'floor' in pg.locator('#legend-title').inner_text()
     # above the floor it is the frame's maximum again
@@ -587,7 +587,7 @@ def test_auto_scale_has_a_floor_that_keeps_noise_dark(open_page):
         {'cols': 10, 'rows': 10, 'spacing': 0.1, 'pins': [0, 9], 'solver': 'jakobsen', 'iterations': 2}))
     pg.js('clothApp.advance(30)')
     m = pg.js('clothApp.cloth().max_diff')
-    assert m > 0.01 and pg.info()['scale'] == m
+    assert m > pg.info()['autoFloor'] and pg.info()['scale'] == m
     pg.wait_for_timeout(400)
     assert 'max' in pg.locator('#legend-title').inner_text()
 
