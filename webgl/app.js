@@ -69,7 +69,7 @@
     mode: function (m) { setColorMode(m || (s.mode === 'strain' ? 'stress' : 'strain')); },
     scaleMode: function (m) { setScaleMode(m || (s.scaleMode === 'auto' ? 'fixed' : 'auto')); },
     fullScale: function (raw) { setFullScale(raw); },
-    loadJson: function (text) { loadScene(text); },
+    loadJson: function (text) { loadScene(share.fromText(text)); },
     currentJson: function () { return JSON.stringify(s.sceneObj, null, 1); },
     replay: function () { replay(); },
     exportFile: function () { exportRecording(); },

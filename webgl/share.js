@@ -109,6 +109,13 @@ window.clothShare = (function () {
     return new TextDecoder('utf-8', { ignoreBOM: true }).decode(b);   // one BOM only, as Python's utf-8-sig
   }
 
+  // Text typed or pasted (the Scene JSON box) -> the text a file of the same bytes decodes to:
+  // one leading byte-order mark (U+FEFF) is not content, as Python's utf-8-sig and decode()
+  // above have it.
+  function fromText(text) {
+    return text.length > 0 && text.charCodeAt(0) === 0xFEFF ? text.slice(1) : text;
+  }
+
   // A File (from a picker or a drop) -> Promise of its text, decoded as the CLI does.
   function readFile(file) {
     return file.arrayBuffer().then(function (buf) { return decode(new Uint8Array(buf)); });
@@ -156,6 +163,6 @@ window.clothShare = (function () {
     return made.then(copy);
   }
 
-  return { MAX_LINK: MAX_LINK, linkFor: linkFor, sceneIn: sceneIn, decode: decode,
+  return { MAX_LINK: MAX_LINK, linkFor: linkFor, sceneIn: sceneIn, decode: decode, fromText: fromText,
            readFile: readFile, download: download, copy: copy, copyLater: copyLater, badByte: badByte };
 })();
