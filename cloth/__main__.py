@@ -11,7 +11,7 @@ import tempfile
 
 from cloth.api import run, load, start, frames_of, simulate, result_of
 from cloth.host import to_json
-from cloth.scene import SceneError
+from cloth.scene import SceneError, MAX_SCENE_BYTES, too_large
 
 
 class Parser(argparse.ArgumentParser):
@@ -38,14 +38,18 @@ def main(argv=None):
                          'scene: standard input is closed'))
         return 2
     try:
+        # Never more than the limit (and a byte to tell) is read.
         if args.scene == '-':
-            data = sys.stdin.buffer.read()
+            data = sys.stdin.buffer.read(MAX_SCENE_BYTES + 1)
         else:
             with open(args.scene, 'rb') as f:
-                data = f.read()
+                data = f.read(MAX_SCENE_BYTES + 1)
     except OSError as err:
         sys.stderr.write('error: scene: cannot read ' + args.scene + ': ' +
                          (err.strerror or str(err)) + '\n')
+        return 2
+    if len(data) > MAX_SCENE_BYTES:
+        sys.stderr.write('error: ' + too_large() + '\n')
         return 2
     # Bytes, decoded here: the same bytes from a file or from standard input give the same
     # answer whatever the locale, and text that is not UTF-8 is bad input like any other.

@@ -5,7 +5,8 @@ returns, and the parity tests compare its CPython and browser results number for
 """
 
 from cloth.host import to_json, kind_of, is_finite, parse_json
-from cloth.scene import parse_scene, settings_scene, SceneError, fail, MAX_FRAMES, MATERIALS, DEFAULT_MATERIAL
+from cloth.scene import (parse_scene, settings_scene, SceneError, fail, MAX_FRAMES, MATERIALS,
+                         DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large)
 from cloth.sim import Cloth, frame, measure, grab, move, release, pin, unpin, retune, cut
 
 # A trace holds frames x vertices points. The CLI streams it (cloth/__main__.py: memory
@@ -33,6 +34,12 @@ def materials():
     """The named fabrics of the page's Material control (scene.MATERIALS: name, label,
     density kg/m^2, stiffness N/m) and the presets' own, declared once for both runtimes."""
     return [MATERIALS, DEFAULT_MATERIAL]
+
+
+def scene_limit():
+    """[the most bytes a scene may have (scene.MAX_SCENE_BYTES), the message past it]: every
+    way a scene comes in checks it while reading, before parsing."""
+    return [MAX_SCENE_BYTES, too_large()]
 
 
 def set_settings(cloth, keys_json_text):

@@ -45,6 +45,11 @@ COMPARE_KEYS = ['solver', 'substeps', 'iterations', 'tethers', 'tolerance', 'com
                 'shear', 'damping', 'cells', 'lines', 'sleep', 'max_speed', 'tear', 'density']
 MAX_TEAR = 1e6
 MAX_PANELS = 4
+# Every scene that comes in (a link, a file opened or dropped, the Scene JSON box, the CLI) is
+# refused past this many bytes of UTF-8 JSON, counted while it is read or inflated, before
+# anything is parsed: the largest recording the page makes (MAX_ACTIONS actions) is about
+# 6 MB, while a 270 kB link once inflated to a 200 MB name (a tab of 900 MB that then crashed).
+MAX_SCENE_BYTES = 16 * 1024 * 1024
 # The page's Material control: named fabrics, each [name, label, density in kg/m^2, stretch
 # stiffness in N/m (the scene's compliance is its inverse; 0: inextensible)]. Jersey is the
 # presets' own: hanging 1.5 m under its own weight it stretches 0.6% at the pins (strain =
@@ -182,9 +187,17 @@ def point(value, key):
     return [x, y]
 
 
+def too_large():
+    """The message for a scene past MAX_SCENE_BYTES, the same wherever it came in."""
+    return ('scene: too large: more than ' + str(MAX_SCENE_BYTES) + ' bytes (' +
+            str(MAX_SCENE_BYTES // (1024 * 1024)) + ' MiB), the limit for any scene')
+
+
 def parse_scene(text, panel=-1):
     """JSON text -> Scene, or SceneError naming the offending key. With `panel` >= 0, the
     scene of that panel of its `compare` list: the scene with the panel's keys written in."""
+    if len(text) > MAX_SCENE_BYTES:
+        fail(too_large())
     if too_deep(text, MAX_DEPTH):
         fail('scene: nested more than ' + str(MAX_DEPTH) + ' levels deep')
     parsed = parse_json(text)

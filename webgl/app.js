@@ -69,7 +69,16 @@
     mode: function (m) { setColorMode(m || (s.mode === 'strain' ? 'stress' : 'strain')); },
     scaleMode: function (m) { setScaleMode(m || (s.scaleMode === 'auto' ? 'fixed' : 'auto')); },
     fullScale: function (raw) { setFullScale(raw); },
-    loadJson: function (text) { loadScene(share.fromText(text)); },
+    loadJson: function (text) {
+      let checked;
+      try {
+        checked = share.fromText(text);       // decoded as a file of the same bytes; size-checked
+      } catch (e) {
+        ui.error('Scene not loaded: ' + e.message + (s.cloth ? ' (the previous scene keeps running)' : ''));
+        throw e;
+      }
+      loadScene(checked);
+    },
     currentJson: function () { return JSON.stringify(s.sceneObj, null, 1); },
     replay: function () { replay(); },
     exportFile: function () { exportRecording(); },

@@ -48,6 +48,9 @@ window.clothCore = (function (api, modules) {
     // materials() -> {list: [[name, label, density kg/m^2, stiffness N/m], ...], preset: name}
     // (cloth/scene.py MATERIALS: the Material control's fabrics, declared there once).
     materials: function () { const m = api.materials(); return { list: m[0], preset: m[1] }; },
+    // sceneLimit() -> {bytes, message}: the most bytes any scene may have and what to say past
+    // it (cloth/scene.py MAX_SCENE_BYTES).
+    sceneLimit: function () { const l = api.scene_limit(); return { bytes: l[0], message: l[1] }; },
     message: message,
     api: api,
   };

@@ -13,6 +13,15 @@
 
 window.clothShare = (function () {
   const MAX_LINK = 262144;
+  // The most bytes a scene may have, however it comes in (cloth/scene.py MAX_SCENE_BYTES),
+  // counted while it is read or inflated: a decompression bomb stops at the limit.
+  const limit = window.clothCore.sceneLimit();
+  const MAX_BYTES = limit.bytes;
+  function tooLarge() {
+    const e = new Error(limit.message);
+    e.tooLarge = true;
+    return e;
+  }
   const ZIPPED = 'scene=', PLAIN = 'scene-json=';
 
   function toBase64Url(bytes) {
@@ -62,13 +71,43 @@ window.clothShare = (function () {
     else return null;
     const data = h.slice((zipped ? ZIPPED : PLAIN).length);
     return new Promise(function (resolve) {
+      // base64url: 4 characters for 3 bytes; neither a scene nor its deflated form is longer
+      if (data.length > Math.ceil(MAX_BYTES / 3) * 4) throw tooLarge();
       const bytes = fromBase64Url(data);
       if (!zipped) { resolve(bytes); return; }
       if (!canZip) throw new Error('this browser cannot decompress it (no DecompressionStream)');
-      resolve(pipe(bytes, new DecompressionStream('deflate-raw')).catch(function () {
-        throw new Error('it does not decompress: it is damaged or cut short');
-      }));
+      resolve(inflate(bytes));
     }).then(decode);
+  }
+
+  // Deflated bytes -> Promise of the inflated ones, read a chunk at a time and stopped (the
+  // stream cancelled) as soon as they pass MAX_BYTES: never inflated in full first.
+  function inflate(bytes) {
+    const reader = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('deflate-raw')).getReader();
+    const parts = [];
+    let total = 0;
+    function next() {
+      return reader.read().then(function (r) {
+        if (r.done) {
+          const out = new Uint8Array(total);
+          let at = 0;
+          parts.forEach(function (p) { out.set(p, at); at += p.length; });
+          return out;
+        }
+        total += r.value.length;
+        if (total > MAX_BYTES) {
+          parts.length = 0;
+          reader.cancel().catch(function () { /* already failed: nothing to stop */ });
+          throw tooLarge();
+        }
+        parts.push(r.value);
+        return next();
+      });
+    }
+    return next().catch(function (e) {
+      if (e && e.tooLarge) throw e;
+      throw new Error('it does not decompress: it is damaged or cut short');
+    });
   }
 
   // The offset of the first byte that is not UTF-8 (as Python's decoder reports it: the start
@@ -113,11 +152,15 @@ window.clothShare = (function () {
   // one leading byte-order mark (U+FEFF) is not content, as Python's utf-8-sig and decode()
   // above have it.
   function fromText(text) {
+    // its UTF-8 bytes: at least one a character, at most three (a surrogate pair: four for two)
+    if (text.length > MAX_BYTES ||
+        (text.length * 3 > MAX_BYTES && new TextEncoder().encode(text).length > MAX_BYTES)) throw tooLarge();
     return text.length > 0 && text.charCodeAt(0) === 0xFEFF ? text.slice(1) : text;
   }
 
   // A File (from a picker or a drop) -> Promise of its text, decoded as the CLI does.
   function readFile(file) {
+    if (file.size > MAX_BYTES) return Promise.reject(tooLarge());   // not read at all
     return file.arrayBuffer().then(function (buf) { return decode(new Uint8Array(buf)); });
   }
 
@@ -163,6 +206,6 @@ window.clothShare = (function () {
     return made.then(copy);
   }
 
-  return { MAX_LINK: MAX_LINK, linkFor: linkFor, sceneIn: sceneIn, decode: decode, fromText: fromText,
+  return { MAX_LINK: MAX_LINK, MAX_BYTES: MAX_BYTES, linkFor: linkFor, sceneIn: sceneIn, decode: decode, fromText: fromText,
            readFile: readFile, download: download, copy: copy, copyLater: copyLater, badByte: badByte };
 })();

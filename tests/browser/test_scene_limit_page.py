@@ -1,0 +1,93 @@
+"""Issue #22, items 1 and 2, in the page: one byte limit (cloth/scene.py MAX_SCENE_BYTES) for
+every way a scene comes in, checked while it is inflated or read; a decompression bomb in a
+link stops at the limit with memory bounded, says that the scene is too large and what the
+limit is, and the running scene stays. The core and the CLI: tests/test_scene_limit.py."""
+import base64
+import json
+import time
+import zlib
+
+import pytest
+
+from cloth.scene import MAX_SCENE_BYTES, too_large
+
+SMALL = {'cols': 3, 'rows': 3, 'spacing': 0.1, 'pins': [0, 2]}
+
+
+def bomb(inflated):
+    """The #scene= fragment of a valid scene that inflates to `inflated` bytes (its name the
+    padding), deflated a megabyte at a time: it is never held whole here either."""
+    head = json.dumps(dict(SMALL, name=''))[:-2]            # ..."name": "
+    tail = '"}'
+    z = zlib.compressobj(9, zlib.DEFLATED, -15)
+    out = [z.compress(head.encode())]
+    left = inflated - len(head) - len(tail)
+    chunk = b'a' * (1 << 20)
+    while left > 0:
+        n = min(left, len(chunk))
+        out.append(z.compress(chunk[:n]))
+        left -= n
+    out.append(z.compress(tail.encode()))
+    out.append(z.flush())
+    return 'scene=' + base64.urlsafe_b64encode(b''.join(out)).decode().rstrip('=')
+
+
+def banner(pg):
+    return pg.js("document.getElementById('banner').hidden ? '' : document.getElementById('banner-text').textContent")
+
+
+def heap(pg):
+    cdp = pg.context.new_cdp_session(pg.page)
+    cdp.send('HeapProfiler.collectGarbage')
+    return cdp.send('Runtime.getHeapUsage')['usedSize']
+
+
+@pytest.mark.parametrize('inflated', [MAX_SCENE_BYTES + 1, 600 * 1024 * 1024, 1900 * 1024 * 1024])
+def test_a_decompression_bomb_in_a_link_stops_at_the_limit(open_page, inflated):
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    before = pg.state()['positions']
+    fragment = bomb(inflated)
+    t0 = time.time()
+    pg.js('(h) => { window.location.hash = h; }', fragment)
+    end = time.time() + 20
+    while time.time() < end and 'link could not be opened' not in banner(pg):
+        time.sleep(0.05)
+    took = time.time() - t0
+    text = banner(pg)
+    assert 'The link could not be opened: ' + too_large() in text, text
+    assert 'Curtain preset' in text
+    assert pg.state()['positions'] == before                 # the running scene stays
+    assert took < 10, took
+    assert 0 < heap(pg) < 200e6, heap(pg)
+
+
+def test_a_link_at_the_limit_opens(open_page):
+    pg = open_page()
+    pg.js('(h) => { window.location.hash = h; }', bomb(MAX_SCENE_BYTES))
+    end = time.time() + 20
+    while time.time() < end and pg.info()['params']['cols'] != 3:
+        time.sleep(0.05)
+    assert pg.info()['params']['cols'] == 3 and banner(pg) == ''
+
+
+def test_a_file_or_a_box_past_the_limit_is_refused_unread(open_page, tmp_path):
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    before = pg.state()['positions']
+    path = tmp_path / 'big.json'
+    text = json.dumps(dict(SMALL, name='a' * (MAX_SCENE_BYTES + 1)))
+    path.write_text(text)
+    pg.locator('#file-input').set_input_files(str(path))
+    end = time.time() + 20
+    while time.time() < end and 'too large' not in banner(pg):
+        time.sleep(0.05)
+    assert too_large() in banner(pg) and pg.state()['positions'] == before
+    pg.js("document.getElementById('banner-close').click()")
+    # The box: multi-byte characters count as their UTF-8 bytes (a third of the limit in
+    # characters, each 3 bytes, is one byte too many with the rest of the scene).
+    big = json.dumps(dict(SMALL, name='\u20ac' * (MAX_SCENE_BYTES // 3)), ensure_ascii=False)
+    pg.js("document.getElementById('json-box').open = true")
+    pg.js("(t) => { document.getElementById('scene-json').value = t; }", big)
+    pg.locator('#btn-load-json').click()
+    assert too_large() in banner(pg) and pg.state()['positions'] == before
