@@ -846,7 +846,7 @@ def main(argv=None):
                          '(OUT/gestures.md)')
     ap.add_argument('--physics', action='store_true',
                     help='only the release table and the strain fields at rest, on the page\'s '
-                         'presets (OUT/physics.md, OUT/physics.json; with --quick: 10x10 and 30x30)')
+                         'presets (OUT/physics.md, .json, .svg; with --quick: 10x10 and 30x30)')
     args = ap.parse_args(argv)
     progress = Progress()
     if args.physics:
@@ -863,6 +863,8 @@ def main(argv=None):
         with open(os.path.join(args.out, name + '.json'), 'w', encoding='utf-8') as f:
             json.dump(json_safe(result), f, indent=1, allow_nan=False)
             f.write('\n')
+        with open(os.path.join(args.out, name + '.svg'), 'w', encoding='utf-8') as f:
+            f.write(bench_physics.svg_release(result))
         sys.stdout.write(md)
         return 0
     if args.gestures:

@@ -293,3 +293,62 @@ def run(quick, progress, open_page):
             'cpus': os.cpu_count() or 0, 'seconds': time.time() - t0}
     result = {'meta': meta, 'release': release, 'fields': fields}
     return markdown(release, fields, meta), result
+
+
+def svg_release(result, distance=0.5):
+    """A log plot of the release table: the fastest vertex after a `distance` pull against the
+    grid size, one line per preset and configuration (the default solid, the seed dashed), and
+    the target (5 m/s after 0.5 m, 3 after 0.2 m) as a grey line."""
+    rows = [r for r in result['release'] if r['distance'] == distance]
+    width, height, left, right, top, bottom = 720, 420, 60, 220, 30, 50
+    sizes = sorted(set(r['n'] for r in rows))
+    lo, hi = 0.1, 100.0
+
+    def x(n):
+        i = sizes.index(n)
+        return left + (width - left - right) * (i / max(1, len(sizes) - 1))
+
+    def y(v):
+        v = min(max(v, lo), hi)
+        return top + (height - top - bottom) * (math.log10(hi) - math.log10(v)) / (math.log10(hi) - math.log10(lo))
+
+    colours = {'curtain': '#e6194b', 'corners': '#3cb44b', 'chain': '#4363d8', 'large': '#f58231',
+               'tearable': '#911eb4'}
+    dashes = {CONFIGS[0][0]: '', CONFIGS[1][0]: '2,3', CONFIGS[2][0]: '8,4'}
+    out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" '
+           'font-size="12">' % (width, height),
+           '<rect width="100%" height="100%" fill="white"/>',
+           '<text x="%d" y="18">Fastest vertex (m/s, log) in the 3 frames after letting go of a %g m '
+           'pull</text>' % (left, distance)]
+    for v in (0.1, 1, 10, 100):
+        out.append('<line x1="%d" x2="%d" y1="%.1f" y2="%.1f" stroke="#ddd"/>' % (left, width - right, y(v), y(v)))
+        out.append('<text x="%d" y="%.1f" text-anchor="end">%g</text>' % (left - 6, y(v) + 4, v))
+    limit = LIMITS.get(distance)
+    if limit:
+        out.append('<line x1="%d" x2="%d" y1="%.1f" y2="%.1f" stroke="#888" stroke-width="2"/>' % (
+            left, width - right, y(limit), y(limit)))
+        out.append('<text x="%d" y="%.1f" fill="#888">target %g m/s</text>' % (left + 4, y(limit) - 4, limit))
+    for n in sizes:
+        out.append('<text x="%.1f" y="%d" text-anchor="middle">%d</text>' % (x(n), height - bottom + 18, n))
+    out.append('<text x="%d" y="%d" text-anchor="middle">grid size N (N x N; the chain N x 1)</text>' % (
+        (left + width - right) // 2, height - 10))
+    legend = 0
+    for name in RELEASE_PRESETS:
+        for label, _ in CONFIGS:
+            pts = sorted((r['n'], r['fastest']) for r in rows if r['preset'] == name and r['config'] == label)
+            if not pts:
+                continue
+            path = ' '.join('%.1f,%.1f' % (x(n), y(v)) for n, v in pts)
+            out.append('<polyline points="%s" fill="none" stroke="%s" stroke-width="1.5" stroke-dasharray="%s"/>'
+                       % (path, colours[name], dashes[label]))
+            ly = top + 14 * legend
+            out.append('<line x1="%d" x2="%d" y1="%d" y2="%d" stroke="%s" stroke-dasharray="%s"/>' % (
+                width - right + 10, width - right + 34, ly, ly, colours[name], dashes[label]))
+            out.append('<text x="%d" y="%d">%s, %s</text>' % (width - right + 38, ly + 4, name, esc(label)))
+            legend += 1
+    out.append('</svg>')
+    return '\n'.join(out) + '\n'
+
+
+def esc(text):
+    return text.replace('&', '&amp;').replace('<', '&lt;').replace('>', '&gt;')
