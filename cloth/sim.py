@@ -485,7 +485,7 @@ def relax(cloth):
         drive_hands(pos, cloth.prev, cloth.hands, cloth.n_hands, cloth.grip, cloth.offset,
                     cloth.target, cloth.aim, cloth.aim_step, cloth.consts)
     cloth.clamped += integrate(pos, cloth.prev, inv_mass, n, cloth.consts, cloth.anchor,
-                               cloth.tether, tethered, cloth.held)
+                               cloth.tether, tethered, cloth.held, cloth.n_hands > 0)
     if cloth.use_xpbd:
         clear(cloth.lam, m)
     if cloth.iterations == 0:

@@ -35,11 +35,11 @@ N_CONSTS = 12
 TINY2 = 1e-30
 
 
-def integrate(pos, prev, inv_mass, n, consts, anchor, tether, tethered, held):
+def integrate(pos, prev, inv_mass, n, consts, anchor, tether, tethered, held, hands_on):
     """Position Verlet, x' = x + (x - x*) * keep + a h^2, for every free vertex, and when
     `tethered` its tether's projection right after it (below); returns how many vertices had
     their speed clamped. A hand (held[k] == 1 with a mass: drive_hands has already placed it)
-    gets only its tether.
+    gets only its tether; `hands_on`: there is one (else held is not read).
 
     keep = 1 / (1 + damping h): the velocity (x - x*) / h loses damping * h of itself per step,
     in a form that stays in (0, 1] for any damping and step (exp would not be bit-exact).
@@ -75,7 +75,7 @@ def integrate(pos, prev, inv_mass, n, consts, anchor, tether, tethered, held):
         i = k + k
         x = pos[i]
         y = pos[i + 1]
-        if held[k] == 1:
+        if hands_on and held[k] == 1:
             px = x
             py = y
             x = prev[i]
@@ -207,23 +207,25 @@ def sweep_xpbd(pos, prev, inv_mass, edge_a, edge_b, rest, lam, m, consts, track,
         ox = prev[ib] - prev[ia]
         oy = prev[ib + 1] - prev[ia + 1]
         dot = dx * ox + dy * oy
+        # alpha~ lambda: the force the edge carries so far this step, as a length
+        held_by = alpha * lam[e]
         if dot * dot > 0.81 * d2 * (ox * ox + oy * oy) and dot > 0.0 and \
                 d2 < 1.21 * r2 and d2 > 0.81 * r2:
             # The usual case: within 10% of rest and turned < 25 degrees in the step.
             c = (d2 - r2) / (r + r)
-            dl = (-c - alpha * lam[e]) / (w * dot / r2 + alpha)
+            dl = (-c - held_by) / (w * dot / r2 + alpha)
             s = dl / r
         else:
             # Far from rest or turned sharply (a drag, a teleport): the linearisation along o
             # would under- or over-shoot, so project along d onto the exact length instead.
             length = sqrt(d2)
             c = length - r
-            dl = (-c - alpha * lam[e]) / (w + alpha)
+            dl = (-c - held_by) / (w + alpha)
             s = dl / length
             ox = dx
             oy = dy
         if track:
-            q = (c + alpha * lam[e]) / r
+            q = (c + held_by) / r
             if q > worst:
                 worst = q
             elif -q > worst:
