@@ -81,7 +81,7 @@ def test_at_rest_the_colours_are_the_curtains_exact_strain(open_page):
 
 
 @pytest.mark.parametrize('preset, material', [('curtain', 'jersey'), ('curtain', 'inextensible'),
-                                              ('corners', 'cotton')])
+                                              ('corners', 'inextensible')])
 def test_a_pull_beyond_reach_let_go_flings_nothing(open_page, preset, material):
     pg = open_page()
     pg.js('(p) => clothApp.usePreset(p)', preset)
