@@ -85,11 +85,12 @@ LET_GO_SLACK = 0.5
 # The window opens only where there is stretch to return: a hand of finite strength let go
 # after it held its vertex through a frame (it may have pulled beyond where it could take it,
 # or pushed the cloth into folds that its cells, which leave a gripped vertex alone, then
-# snap open: measured 4.4 m/s after a 0.2 m push up), or a cloth with an edge stretched or
-# squashed by more than LET_GO_STRAIN (a pin dragged beyond reach, unpinned). Anything else
-# let go (a tap, a rested corner unpinned) leaves the motion as physics makes it: the window's
-# bound, the speed before plus g t, would slow a swinging chain's tip, which its tension
-# speeds up faster than gravity (measured: a tap on a swinging chain moved it 0.34 m).
+# snap open: measured 4.4 m/s after a 0.2 m push up), or a pin unpinned while an edge is
+# strained beyond LET_GO_STRAIN (a pin dragged beyond reach). Anything else let go (a tap: a
+# press and release with no frame between) leaves the motion as physics makes it: the
+# window's bound, the speed before plus g t, would slow a swinging chain's tip, which its
+# tension speeds up faster than gravity (measured: a tap on a swinging chain moved it 0.34 m),
+# and a settling two-corner hang whose corners keep a residual strain (0.45 at 120x120).
 LET_GO_STRAIN = 0.05
 
 
@@ -885,11 +886,11 @@ def gather_grip(cloth, k):
     return kept
 
 
-def let_go(cloth, k, pulled):
+def let_go(cloth, k, strained):
     """Vertex k has just been let go (released or unpinned): if it is free now and there is
-    stretch to return (`pulled`: a hand held it through a frame; or an edge strained beyond
-    LET_GO_STRAIN), the let-go window (LET_GO_SLACK) starts with the next step."""
-    if cloth.pinned[k] == 0 and cloth.held[k] == 0 and (pulled or most_strain(cloth) > LET_GO_STRAIN):
+    stretch to return (`strained`), the let-go window (LET_GO_SLACK) starts with the next
+    step."""
+    if cloth.pinned[k] == 0 and cloth.held[k] == 0 and strained:
         cloth.let_go_pending = True
 
 
@@ -961,7 +962,9 @@ def unpin(cloth, k):
     check_vertex(cloth, k)
     cloth.pinned[k] = 0
     refresh(cloth, k)
-    let_go(cloth, k, False)
+    # A pin dragged beyond reach and let go; a pin in place holds no stretch of its own (the
+    # strain a settled cloth keeps at a pin, 0.45 at a 120x120 two-corner hang's, is no reason).
+    let_go(cloth, k, cloth.held[k] == 0 and most_strain(cloth) > LET_GO_STRAIN)
 
 
 def toggle_pin(cloth, k):

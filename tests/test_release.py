@@ -4,7 +4,7 @@ whatever stretch a hand leaves returns without a fling, while a throw still thro
 (cloth/sim.py HAND_FORCE and LET_GO_SLACK)."""
 import math
 
-from hypothesis import given, settings, strategies as st, HealthCheck
+from hypothesis import given, settings, strategies as st, HealthCheck, example
 import pytest
 
 import cloth.sim as sim
@@ -71,9 +71,10 @@ def let_go(cloth, k):
 BOTTOM = (N - 1) * N + N // 2
 # Nothing rises, after a release, more than this above the highest pin and the highest point at
 # the release. Not zero: a compliant top edge between two pins is pushed up by the cloth swinging
-# back under it (a sheet in its plane cannot buckle out of it; measured up to 2.7 cm on this
-# 12x12 jersey, 1 mm inextensible), and a cloth pushed up unfolds a little upward as it drops.
-RISE = 0.04
+# back under it (a sheet in its plane cannot buckle out of it; measured up to 4.0 cm on this
+# 12x12 jersey, 1 mm inextensible; README, known limits), and a cloth pushed up unfolds a
+# little upward as it drops. A fling threw the cloth 0.6-2 m up.
+RISE = 0.05
 
 
 def reach(cloth, k):
@@ -149,6 +150,8 @@ def test_without_the_let_go_window_a_stretched_cloth_snaps_back(monkeypatch):
 @given(k=st.integers(0, N * N - 1), angle=st.floats(0, 2 * math.pi), distance=st.sampled_from([0.2, 0.5]),
        hold=st.sampled_from([0, 30]), compliant=st.booleans())
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@example(k=124, angle=2.1790795194679657, distance=0.2, hold=30, compliant=True)   # 4.0 cm
+@example(k=137, angle=5.808558131494886, distance=0.2, hold=30, compliant=True)    # 2.6 cm
 def test_random_pulls_fling_nothing(k, angle, distance, hold, compliant):
     cloth = hanging(**(JERSEY if compliant else {}))
     if cloth.pinned[k] == 1:
