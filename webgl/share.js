@@ -83,7 +83,20 @@ window.clothShare = (function () {
   // Deflated bytes -> Promise of the inflated ones, read a chunk at a time and stopped (the
   // stream cancelled) as soon as they pass MAX_BYTES: never inflated in full first.
   function inflate(bytes) {
-    const reader = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('deflate-raw')).getReader();
+    // The deflated bytes go in a small slice per pull: a decompressor turns each chunk it is
+    // given into all of its output at once, and deflate expands up to 1032:1, so a link fed
+    // whole (a 2 MB fragment that inflates to 1.9 GB) would be inflated in full, 10 s of work,
+    // before the first read could stop it. A slice of IN_SLICE bytes is at most about 1 MB out.
+    const IN_SLICE = 1024;
+    let fed = 0;
+    const source = new ReadableStream({
+      pull: function (c) {
+        if (fed >= bytes.length) { c.close(); return; }
+        c.enqueue(bytes.subarray(fed, Math.min(fed + IN_SLICE, bytes.length)));
+        fed += IN_SLICE;
+      },
+    }, { highWaterMark: 0 });
+    const reader = source.pipeThrough(new DecompressionStream('deflate-raw')).getReader();
     const parts = [];
     let total = 0;
     function next() {
