@@ -14,14 +14,9 @@ window.clothCompare = (function () {
   // scene that set its own solver does not make them the same.
   const SEED_VS_DEFAULT = [{ solver: 'jakobsen', substeps: 1, iterations: 20 },
                            { solver: 'xpbd', substeps: 8, iterations: 1 }];
-  // The keys the editor offers (cloth/scene.py COMPARE_KEYS has a few more for scenes).
-  const FIELDS = {
-    substeps: { min: 1, max: 16, int: true, label: 'Substeps' },
-    iterations: { min: 0, max: 200, int: true, label: 'Iterations' },
-    tolerance: { min: 0, max: 1, int: false, label: 'Tolerance' },
-    compliance: { min: 0, max: 1000, int: false, label: 'Compliance' },
-    damping: { min: 0, max: 100, int: false, label: 'Damping' },
-  };
+  // The editor's number fields (cloth/scene.py COMPARE_KEYS has a few more for scenes) take
+  // their ranges, labels and the reading of what is typed from the panel's (scenes.js).
+  const LIMITS = window.clothScenes.LIMITS;
 
   // Rectangles for n panels in a w x h canvas (CSS px): the grid of columns x rows that
   // gives each panel's view box (aspect bw / bh) the most pixels per metre; side by side on
@@ -73,39 +68,28 @@ window.clothCompare = (function () {
         h.change(next);
         return;
       }
-      const f = FIELDS[key];
-      const text = raw === null ? null : String(raw).trim();
+      const text = String(raw).trim();
       if (text === '') { delete next[i][key]; h.change(next); return; }
-      let v = text === null ? NaN : Number(text);
-      if (!Number.isFinite(v)) {
-        h.note('Panel ' + (i + 1) + ' ' + f.label + ': not a number; the old value is kept');
+      const c = window.clothScenes.clamp(key, text);
+      const note = c.note ? 'Panel ' + (i + 1) + ' ' + c.note : '';
+      if (c.value === null) {
+        h.note(note);
         render(current);
         return;
       }
-      let note = '';
-      if (f.int && v !== Math.round(v)) { v = Math.round(v); note = ' rounded to ' + v; }
-      if (v < f.min) { v = f.min; note = ' clamped to its minimum ' + v; }
-      if (v > f.max) { v = f.max; note = ' clamped to its maximum ' + v; }
-      next[i][key] = v;
-      h.change(next, note ? 'Panel ' + (i + 1) + ' ' + f.label + note : '');
+      next[i][key] = c.value;
+      h.change(next, note);
     }
 
     function field(i, key, value) {
-      const f = FIELDS[key];
+      const f = LIMITS[key];
       const input = document.createElement('input');
-      // Text, not type=number: empty means "the scene's", and a number field reports letters
-      // as empty too, so `abc` would silently become the scene's value.
-      input.type = 'text';
-      input.inputMode = f.int ? 'numeric' : 'decimal';
-      input.autocomplete = 'off';
-      input.spellcheck = false;
+      // Empty means "the scene's" (clothFields: text fields, read one way).
+      window.clothFields.attach(input, key, function (text) { edit(i, key, text); });
       input.placeholder = 'scene';
       input.value = value === undefined ? '' : String(value);
       input.setAttribute('aria-label', 'Panel ' + (i + 1) + ' ' + f.label);
       input.dataset.key = key;
-      input.addEventListener('change', function () {
-        edit(i, key, input.validity && input.validity.badInput ? null : input.value);
-      });
       const label = document.createElement('label');
       label.textContent = f.label + ' ';
       label.appendChild(input);

@@ -10,16 +10,43 @@ window.clothScenes = (function () {
   const own = window.clothOptions.own;
   // Ranges the UI accepts; anything outside is clamped with a visible note.
   const LIMITS = {
-    cols: { min: 1, max: 200, int: true, label: 'Columns' },
-    rows: { min: 1, max: 200, int: true, label: 'Rows' },
-    iterations: { min: 0, max: 200, int: true, label: 'Iterations' },
-    substeps: { min: 1, max: 16, int: true, label: 'Substeps' },
-    gravity: { min: -100, max: 100, int: false, label: 'Gravity' },
-    damping: { min: 0, max: 100, int: false, label: 'Damping' },
-    fullScale: { min: 0.0001, max: 1, int: false, label: 'Full scale' },
+    cols: { min: 1, max: 200, int: true, step: 1, label: 'Columns' },
+    rows: { min: 1, max: 200, int: true, step: 1, label: 'Rows' },
+    iterations: { min: 0, max: 200, int: true, step: 1, label: 'Iterations' },
+    substeps: { min: 1, max: 16, int: true, step: 1, label: 'Substeps' },
+    gravity: { min: -100, max: 100, int: false, step: 0.1, label: 'Gravity' },
+    damping: { min: 0, max: 100, int: false, step: 0.1, label: 'Damping' },
+    fullScale: { min: 0.0001, max: 1, int: false, step: 0.001, label: 'Full scale' },
     // The strain past which an edge breaks; empty, `off` or 0: no tearing.
-    tear: { min: 0.01, max: 100, int: false, label: 'Tear', off: true },
+    tear: { min: 0.01, max: 100, int: false, step: 0.01, label: 'Tear', off: true },
+    // The compare editor's own keys (cloth/scene.py checks the same ranges).
+    tolerance: { min: 0, max: 1, int: false, step: 1e-4, label: 'Tolerance' },
+    compliance: { min: 0, max: 1000, int: false, step: 1e-4, label: 'Compliance' },
   };
+
+  // The one reading of a number typed into any field (the panel's, the compare editor's, the
+  // Tear field, the full scale): a plain decimal number -> {value, read}, anything else ->
+  // {value: null, why}. A typographic minus and a decimal comma are read as a person means
+  // them, and `read` says so; whatever a browser or a parser would otherwise guess at
+  // (5,500, 0x10, 1_000, 1e-400 that rounds to 0, Infinity) is refused, never rewritten.
+  const PLAIN_NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
+  function readNumber(raw) {
+    const typed = raw === null || raw === undefined ? '' : String(raw).trim();
+    let text = typed.replace(/[\u2212\u2013\uFE63\uFF0D]/g, '-');    // minus signs and an en dash
+    const comma = /^([+-]?\d*),(\d+)$/.exec(text);                     // one comma, no point
+    if (comma) {
+      if (comma[2].length === 3 && comma[1].replace(/[+-]/, '') !== '' && comma[1].replace(/[+-]/, '') !== '0') {
+        return { value: null, why: 'a comma before three digits could be a decimal comma or a thousands ' +
+          'separator (write ' + comma[1] + '.' + comma[2] + ' or ' + comma[1] + comma[2] + ')' };
+      }
+      text = comma[1] + '.' + comma[2];
+    }
+    if (!PLAIN_NUMBER.test(text)) return { value: null, why: 'not a number' };
+    const v = Number(text);
+    if (!Number.isFinite(v)) return { value: null, why: 'not a finite number' };
+    if (v === 0 && /[1-9]/.test(text.split(/[eE]/)[0])) return { value: null, why: 'too small: it rounds to 0' };
+    return { value: v, read: text === typed ? '' : 'read "' + typed.slice(0, 24) + '" as ' + v };
+  }
 
   // Each solver's own substeps and iterations (mirrors cloth/scene.py's
   // solver_defaults): picking a solver in the UI starts from these.
@@ -215,32 +242,30 @@ window.clothScenes = (function () {
     return '';
   }
 
-  // Clamp a UI value: returns {value, note} (note is '' when in range).
+  // Clamp a UI value: returns {value, note} (note is '' when in range; value null when the
+  // text is refused, and the note says why).
   function clamp(key, raw) {
     if (!own(LIMITS, key)) throw new Error('unknown parameter: ' + key);
     const lim = LIMITS[key];
-    // Number('') and Number('  ') are 0: an empty field is no number, not a zero.
     const text = raw === null || raw === undefined ? '' : String(raw).trim();
-    // A field the browser could not read a number from arrives as null: that is no number,
-    // even where an empty field means off.
-    if (lim.off && raw !== null && raw !== undefined &&
-        (text === '' || text.toLowerCase() === 'off' || Number(text) === 0)) return { value: 0, note: '' };
-    let v = text === '' ? NaN : Number(text);
-    if (!Number.isFinite(v)) {
+    if (lim.off && (text === '' || text.toLowerCase() === 'off')) return { value: 0, note: '' };
+    const r = readNumber(text);
+    if (r.value === null) {
       const shown = text === '' ? '' : ' ("' + text.slice(0, 24) + '")';
-      const what = Number.isNaN(v) ? 'not a number' : 'not a finite number';
-      return { value: null, note: lim.label + ': ' + what + shown + '; the old value is kept' };
+      return { value: null, note: lim.label + ': ' + r.why + shown + '; the old value is kept' };
     }
+    let v = r.value;
+    const notes = r.read ? [lim.label + ': ' + r.read] : [];
+    if (lim.off && v === 0) return { value: 0, note: notes.join('; ') };
     // A field where empty means off takes no negative value: a limit below zero is a slip of
     // the hand, and its minimum (the most that tearing can do) would shred the cloth.
     if (lim.off && v < 0) {
       return { value: null, note: lim.label + ': ' + text.slice(0, 24) + ' is below 0 (0 or empty: off); the old value is kept' };
     }
-    let note = '';
-    if (lim.int && v !== Math.round(v)) { v = Math.round(v); note = lim.label + ' rounded to ' + v; }
-    if (v < lim.min) { v = lim.min; note = lim.label + ' clamped to its minimum ' + v; }
-    if (v > lim.max) { v = lim.max; note = lim.label + ' clamped to its maximum ' + v; }
-    return { value: v, note: note };
+    if (lim.int && v !== Math.round(v)) { v = Math.round(v); notes.push(lim.label + ' rounded to ' + v); }
+    if (v < lim.min) { v = lim.min; notes.push(lim.label + ' clamped to its minimum ' + v); }
+    if (v > lim.max) { v = lim.max; notes.push(lim.label + ' clamped to its maximum ' + v); }
+    return { value: v, note: notes.join('; ') };
   }
 
   function defaults(name) {
@@ -251,5 +276,5 @@ window.clothScenes = (function () {
   return { PRESETS: PRESETS, LIMITS: LIMITS, SOLVERS: SOLVERS, MATERIALS: MATERIALS, materialOf: materialOf,
            PAGE_LIMITS: PAGE_LIMITS,
            REAL_TIME_WORK: REAL_TIME_WORK, defaults: defaults, make: make, viewFor: viewFor,
-           clamp: clamp, workOf: workOf, pageLimit: pageLimit };
+           clamp: clamp, readNumber: readNumber, workOf: workOf, pageLimit: pageLimit };
 })();

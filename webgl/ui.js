@@ -68,12 +68,6 @@ window.clothUI = (function () {
     let noteTimer = 0;
     let legendName = 'edge |diff|';
     let helpReturn = null;
-    // A number field's text: what a person typed, or null when the browser could not read a
-    // number out of it (type=number reports '' for `abc`, so '' alone cannot tell).
-    function fieldText(input) {
-      return input.validity && input.validity.badInput ? null : input.value;
-    }
-
     // A button clicked with a pointer gives focus back to the page, so that Space and the
     // other shortcuts work at once (a focused button would take Space and click itself
     // again: Reset twice). Keyboard clicks (detail 0) keep focus where the person put it.
@@ -118,7 +112,7 @@ window.clothUI = (function () {
     $('material').appendChild(custom);
     $('material').addEventListener('change', function () { h.material($('material').value); });
     params.forEach(function (key) {
-      $(key).addEventListener('change', function () { h.param(key, fieldText($(key))); });
+      window.clothFields.attach($(key), key, function (text) { h.param(key, text); });
     });
     document.querySelectorAll('input[name=mode]').forEach(function (r) {
       r.addEventListener('change', function () { if (r.checked) h.mode(r.value); });
@@ -126,7 +120,7 @@ window.clothUI = (function () {
     document.querySelectorAll('input[name=scale]').forEach(function (r) {
       r.addEventListener('change', function () { if (r.checked) h.scaleMode(r.value); });
     });
-    el.fullScale.addEventListener('change', function () { h.fullScale(fieldText(el.fullScale)); });
+    window.clothFields.attach(el.fullScale, 'fullScale', function (text) { h.fullScale(text); });
     el.loadJson.addEventListener('click', function () {
       try { h.loadJson(el.json.value); } catch (e) { /* shown in the banner */ }
     });

@@ -1,0 +1,96 @@
+"""Issue #22, item 3: one reading for every number a person types (the panel's fields, Tear,
+Full scale and the compare editor's). Text that is not a plain number is refused with a note
+and the old value kept; a typographic minus and a decimal comma are read as meant, and the
+note says so; nothing is rewritten by the browser before the page sees it (a number field
+dropped the minus of -5, the comma of 5,5 and the x of 0x10). Typed key by key, as a person
+types, into the real fields."""
+import json
+
+import pytest
+
+from browser_helpers import near  # noqa: F401  (the helpers' import sets the path)
+
+REFUSED = ['0x10', '1_000', '1e-400', '5,500', 'Infinity', '5 5', '--5', '1e5e5', '.', '+', '½', '٣']
+
+
+def type_into(pg, selector, text):
+    pg.fill(selector, '')
+    pg.locator(selector).press_sequentially(text) if text else None
+    pg.press(selector, 'Enter')
+    pg.locator(selector).blur()
+
+
+def note(pg):
+    return pg.info()['note']
+
+
+@pytest.mark.parametrize('field', ['gravity', 'damping', 'iterations', 'tear'])
+def test_text_that_is_not_a_plain_number_is_refused_in_every_panel_field(open_page, field):
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    type_into(pg, '#' + field, '3')
+    assert pg.info()['params'][field] == 3
+    for text in REFUSED:
+        type_into(pg, '#' + field, text)
+        assert 'the old value is kept' in note(pg), (field, text, note(pg))
+        assert pg.info()['params'][field] == 3, (field, text)
+        assert pg.input_value('#' + field) == '3', (field, text)
+    # The same kind of text in the full-scale field.
+    pg.js("clothApp.setScaleMode('fixed')")
+    for text in REFUSED:
+        type_into(pg, '#full-scale', text)
+        assert 'the old value is kept' in note(pg) and pg.info()['fullScale'] == 0.05, text
+
+
+def test_a_typographic_minus_and_a_decimal_comma_are_read_as_meant_and_said(open_page):
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    type_into(pg, '#gravity', '\u22125')                     # U+2212, what a phone or a document types
+    assert pg.info()['params']['gravity'] == -5
+    assert 'read "\u22125" as -5' in note(pg), note(pg)
+    assert pg.input_value('#gravity') == '-5'
+    type_into(pg, '#gravity', '9,5')
+    assert pg.info()['params']['gravity'] == 9.5 and 'as 9.5' in note(pg)
+    type_into(pg, '#damping', '0,25')
+    assert pg.info()['params']['damping'] == 0.25
+    type_into(pg, '#tear', '\u22121')                        # read as -1: below 0, refused as before
+    assert 'below 0' in note(pg) and pg.info()['params']['tear'] == 0
+    # Read, then clamped: both are said.
+    type_into(pg, '#damping', '\u22122')
+    assert pg.info()['params']['damping'] == 0
+    assert 'as -2' in note(pg) and 'clamped to its minimum 0' in note(pg), note(pg)
+
+
+def test_arrow_keys_step_a_field_within_its_range(open_page):
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    type_into(pg, '#gravity', '9.8')
+    pg.locator('#gravity').press('ArrowUp')
+    pg.locator('#gravity').press('ArrowUp')
+    assert pg.info()['params']['gravity'] == 10 and pg.input_value('#gravity') == '10'
+    type_into(pg, '#substeps', '16')
+    pg.locator('#substeps').press('ArrowUp')
+    assert pg.info()['params']['substeps'] == 16
+    pg.locator('#substeps').press('ArrowDown')
+    assert pg.info()['params']['substeps'] == 15
+
+
+def test_the_compare_editor_reads_numbers_the_same_way(open_page):
+    pg = open_page()
+    pg.locator('#btn-compare-pair').click()
+    pg.js('clothApp.setPaused(true)')
+
+    def panel_scene():
+        return json.loads(pg.js('clothApp.panels()')[1]['scene'])
+
+    sel = '#compare-list input[data-key=damping] >> nth=1'
+    type_into(pg, sel, '2')
+    assert panel_scene()['damping'] == 2
+    for text in REFUSED:
+        type_into(pg, sel, text)
+        assert 'Panel 2 Damping' in note(pg) and 'the old value is kept' in note(pg), (text, note(pg))
+        assert panel_scene()['damping'] == 2, text
+    type_into(pg, sel, '1,5')
+    assert panel_scene()['damping'] == 1.5 and 'as 1.5' in note(pg)
+    type_into(pg, sel, '\u22121')
+    assert panel_scene()['damping'] == 0 and 'clamped to its minimum 0' in note(pg)
