@@ -7,7 +7,7 @@ returns, and the parity tests compare its CPython and browser results number for
 from cloth.host import to_json, kind_of, is_finite, parse_json
 from cloth.scene import (parse_scene, settings_scene, SceneError, fail, MAX_FRAMES, MATERIALS,
                          DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large)
-from cloth.sim import Cloth, frame, measure, grab, move, release, pin, unpin, retune, cut
+from cloth.sim import Cloth, frame, measure, grab, move, move_by, release, pin, unpin, retune, cut
 
 # A trace holds frames x vertices points. The CLI streams it (cloth/__main__.py: memory
 # stays that of one frame); in memory, as `run` holds it, it would be gigabytes.
@@ -78,7 +78,10 @@ def apply_action(cloth, action):
         else:
             grab(cloth, k, cloth.pos[k + k], cloth.pos[k + k + 1])
     elif op == 'move':
-        move(cloth, k, action.to_x, action.to_y)
+        if action.by:
+            move_by(cloth, k, action.to_x, action.to_y)
+        else:
+            move(cloth, k, action.to_x, action.to_y)
     elif op == 'release':
         release(cloth, k)
     elif op == 'pin':

@@ -30,7 +30,7 @@ SCENE_KEYS = ['cols', 'rows', 'spacing', 'pins', 'gravity', 'dt', 'substeps', 'i
               'damping', 'solver', 'actions', 'tethers', 'shear', 'compliance', 'tolerance',
               'max_speed', 'sleep', 'cells', 'lines', 'name', 'frames', 'compare', 'tear',
               'density']
-ACTION_KEYS = ['frame', 'op', 'vertex', 'to', 'scene', 'from']
+ACTION_KEYS = ['frame', 'op', 'vertex', 'to', 'by', 'scene', 'from']
 # The keys a `set` action may change on the running cloth: everything but what makes the grid
 # (cols, rows, spacing, shear, pins) and what is not physics (actions, frames, name).
 SETTABLE = ['gravity', 'dt', 'substeps', 'iterations', 'damping', 'solver', 'tethers',
@@ -150,6 +150,7 @@ class Action:
         self.keys = keys       # `set`: the scene keys it sets (a JSON object); else None
         self.from_x = 0.0      # `cut`: the blade runs from (from_x, from_y) to (to_x, to_y)
         self.from_y = 0.0
+        self.by = False        # `move`: (to_x, to_y) is a displacement from where the hand took hold
 
 
 def number(value, key, lo, hi, lo_open, what):
@@ -399,7 +400,7 @@ def parse_actions(actions, n, settings):
         if op == 'set':
             # {"frame": f, "op": "set", "scene": {key: value, ...}}: settings changed on the
             # running cloth at frame f (the page records a person's live changes so).
-            for key in ['vertex', 'to']:
+            for key in ['vertex', 'to', 'by']:
                 if has_key(a, key):
                     fail(where + '.' + key + ': a set takes no ' + key)
             if not has_key(a, 'scene'):
@@ -414,6 +415,8 @@ def parse_actions(actions, n, settings):
             # segment crosses the blade's, where the cloth is at that moment, breaks.
             if has_key(a, 'vertex'):
                 fail(where + '.vertex: a cut takes no vertex (it cuts what its blade crosses)')
+            if has_key(a, 'by'):
+                fail(where + '.by: only move takes "by" (a displacement from where the hand took hold)')
             for key in ['from', 'to']:
                 if not has_key(a, key):
                     fail(where + '.' + key + ': missing (cut needs "from" and "to", [x, y] each)')
@@ -431,14 +434,25 @@ def parse_actions(actions, n, settings):
         vertex = integer(a['vertex'], where + '.vertex', 0, n - 1,
                          'a vertex index from 0 to cols * rows - 1')
         has_to = has_key(a, 'to')
+        has_by = has_key(a, 'by')
         to = [0.0, 0.0]
-        if has_to:
+        if has_by:
+            # {"op": "move", "by": [dx, dy]}: the hand goes (dx, dy) from where it took hold
+            # (compare mode's panels each hold their own vertex where it is).
+            if op != 'move':
+                fail(where + '.by: only move takes "by" (a displacement from where the hand took hold)')
+            if has_to:
+                fail(where + '.by: a move takes "to" or "by", not both')
+            to = point(a['by'], where + '.by')
+        elif has_to:
             if op != 'grab' and op != 'move':
                 fail(where + '.to: only grab and move take a target')
             to = point(a['to'], where + '.to')
         elif op == 'move':
-            fail(where + '.to: missing (move needs a target [x, y])')
-        parsed.append(Action(frame, op, vertex, has_to, to[0], to[1], None))
+            fail(where + '.to: missing (move needs a target "to": [x, y], or "by": [dx, dy] from where the hand took hold)')
+        action = Action(frame, op, vertex, has_to, to[0], to[1], None)
+        action.by = has_by
+        parsed.append(action)
     return check_holds(stable_sort_by_frame(parsed))
 
 

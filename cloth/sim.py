@@ -6,6 +6,7 @@ State (struct of arrays, one per quantity; n vertices, m edges):
                  vertex's mass (density * spacing^2, or 1 kg) inverted otherwise
     pinned, held n ints (0/1)
     target       2n doubles: where the hand holding a vertex is (see HAND_FORCE)
+    hold_from    2n doubles: where that hand took hold (a `move` `by` is relative to it)
     edge_a, edge_b, rest   m edges: structural grid edges, then the shear diagonals if the
                  scene declares them
 The core knows nothing of the DOM or GL: the page reads `pos`, `diff` and `stress`.
@@ -126,6 +127,7 @@ class Cloth:
         self.held = i32(n)
         # The hands (HAND_FORCE): where each is, and where it is taking each vertex it holds.
         self.target = f64(2 * n)
+        self.hold_from = f64(2 * n)
         self.aim = f64(2 * n)
         self.aim_step = f64(2 * n)
         self.hands = i32(n)
@@ -273,6 +275,9 @@ class Cloth:
 
     def move(self, k, x, y):
         move(self, k, x, y)
+
+    def move_by(self, k, dx, dy):
+        move_by(self, k, dx, dy)
 
     def release(self, k):
         release(self, k)
@@ -904,6 +909,8 @@ def grab(cloth, k, x, y):
     cloth.held[k] = 1
     refresh(cloth, k)
     place(cloth, k, x, y)
+    cloth.hold_from[k + k] = x
+    cloth.hold_from[k + k + 1] = y
 
 
 def move(cloth, k, x, y):
@@ -916,6 +923,16 @@ def move(cloth, k, x, y):
     place(cloth, k, x, y)
     cloth.asleep = False
     cloth.still_frames = 0
+
+
+def move_by(cloth, k, dx, dy):
+    """Move the hand holding vertex k to (dx, dy) from where it took hold: compare mode's
+    panels each hold their own vertex where it is, and one drag moves every hand by the same
+    displacement."""
+    check_vertex(cloth, k)
+    if cloth.held[k] == 0:
+        raise SceneError('vertex: move needs a held vertex (grab it first)')
+    move(cloth, k, cloth.hold_from[k + k] + dx, cloth.hold_from[k + k + 1] + dy)
 
 
 def release(cloth, k):

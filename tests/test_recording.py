@@ -169,3 +169,63 @@ def test_set_settings_refuses_bad_keys_and_changes_nothing():
         with pytest.raises(SceneError):
             set_settings(cloth, bad)
         assert list(cloth.pos) == pos and cloth.substeps == 8
+
+
+# ---- compare mode's hands: a grab where the vertex is, moves `by` a displacement -------------
+
+def test_a_move_by_is_the_move_to_where_the_hand_took_hold_plus_the_displacement():
+    """Compare mode records a grab with no `to` and moves `by` [dx, dy]: each panel's hand goes
+    the same displacement from where its own vertex was. On one cloth that is, bit for bit, the
+    move `to` that point, on both solvers and on a pinned vertex."""
+    for solver in ['xpbd', 'jakobsen']:
+        for k in [10, 3]:                     # free, and pinned
+            base = json.loads(text(solver=solver, rows=5))
+            cloth = load(json.dumps(base))
+            simulate(cloth, 12, None)
+            x0, y0 = cloth.pos[2 * k], cloth.pos[2 * k + 1]
+            d = [(0.13, -0.21), (-0.05, 0.4), (0.0, 0.0)]
+            by = dict(base, actions=[{'frame': 12, 'op': 'grab', 'vertex': k}] +
+                      [{'frame': 14 + 3 * i, 'op': 'move', 'vertex': k, 'by': list(v)} for i, v in enumerate(d)] +
+                      [{'frame': 30, 'op': 'release', 'vertex': k}])
+            to = dict(base, actions=[{'frame': 12, 'op': 'grab', 'vertex': k, 'to': [x0, y0]}] +
+                      [{'frame': 14 + 3 * i, 'op': 'move', 'vertex': k, 'to': [x0 + v[0], y0 + v[1]]}
+                       for i, v in enumerate(d)] +
+                      [{'frame': 30, 'op': 'release', 'vertex': k}])
+            assert run(json.dumps(by), 40) == run(json.dumps(to), 40), (solver, k)
+
+
+def test_a_grab_and_release_with_no_move_leaves_the_cloth_as_it_was():
+    """A tap: a hand that takes hold where the vertex is and lets go in the same frame moves
+    nothing. On the default, a cloth in motion goes on bit for bit as if untouched; the seed's
+    hold is kinematic, so there the tap moves nothing but catches its vertex (stops it)."""
+    base = json.loads(text(rows=6, cols=6, pins=[0]))         # swinging from a corner
+    tap = dict(base, actions=[{'frame': 20, 'op': 'grab', 'vertex': 35},
+                              {'frame': 20, 'op': 'release', 'vertex': 35}])
+    assert run(json.dumps(tap), 50) == run(json.dumps(base), 50)
+    seed = dict(base, solver='jakobsen')
+    seed_tap = dict(tap, solver='jakobsen')
+    assert run(json.dumps(seed_tap), 20) == run(json.dumps(seed), 20)
+    cloth = load(json.dumps(seed_tap))
+    simulate(cloth, 20, None)
+    # from rest: prev is where an exact free fall from here comes from (sim.rest_at)
+    assert (cloth.prev[70] - cloth.pos[70], cloth.prev[71] - cloth.pos[71]) == pytest.approx((0.5 * cloth.ax, 0.5 * cloth.ay), abs=1e-15)
+
+
+@pytest.mark.parametrize('act, message', [
+    ({'frame': 1, 'op': 'move', 'vertex': 5, 'by': [0, 1], 'to': [0, 0]}, r'^actions\[1\]\.by: a move takes "to" or "by", not both'),
+    ({'frame': 1, 'op': 'grab', 'vertex': 5, 'by': [0, 1]}, r'^actions\[1\]\.by: only move takes "by"'),
+    ({'frame': 1, 'op': 'release', 'vertex': 5, 'by': [0, 1]}, r'^actions\[1\]\.by: only move takes "by"'),
+    ({'frame': 1, 'op': 'cut', 'from': [0, 0], 'to': [1, 1], 'by': [0, 1]}, r'^actions\[1\]\.by: only move takes "by"'),
+    ({'frame': 1, 'op': 'set', 'scene': {}, 'by': [0, 1]}, r'^actions\[1\]\.by: a set takes no by'),
+    ({'frame': 1, 'op': 'move', 'vertex': 5, 'by': [0]}, r'^actions\[1\]\.by: must be a list of two numbers'),
+    ({'frame': 1, 'op': 'move', 'vertex': 5, 'by': [0, 'x']}, r'^actions\[1\]\.by: must be a number'),
+    ({'frame': 1, 'op': 'move', 'vertex': 5}, r'^actions\[1\]\.to: missing \(move needs a target "to": \[x, y\], or "by"'),
+])
+def test_by_errors_name_the_key(act, message):
+    with pytest.raises(SceneError, match=message):
+        run(text(actions=[{'frame': 0, 'op': 'grab', 'vertex': 5}, act]), 2)
+
+
+def test_a_move_by_needs_a_held_vertex():
+    with pytest.raises(SceneError, match=r'^actions: move of vertex 5 at frame 1 which is not held'):
+        run(text(actions=[{'frame': 1, 'op': 'move', 'vertex': 5, 'by': [0, 1]}]), 2)

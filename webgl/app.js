@@ -20,8 +20,9 @@
 //
 // Panels: a scene with a `compare` list runs once per entry, side by side (compare.js), each
 // panel its own cloth with the entry's settings written in, all under the same hands: every
-// gesture, in any panel, happens to the same vertex at the same world position in each panel,
-// in the same frame, and is recorded once. A scene without one is a single panel.
+// gesture, in any panel, happens to the same vertex in each panel, in the same frame, and is
+// recorded once; a hand takes hold of each panel's vertex where that panel has it and moves
+// every panel's hand by the same displacement. A scene without one is a single panel.
 'use strict';
 
 (function () {
@@ -51,6 +52,10 @@
     replayEnd: -1,      // the frame a replay stops at, or -1 when none is playing
     replayEnded: false, // a replay stopped at its end and nothing has happened since
     pinEdits: {},       // vertex -> pinned: the pins a person set (true) or removed (false)
+    // Compare mode: vertex -> {x, y, dx, dy}: where its pointer took hold (world metres, in the
+    // panel pressed) and how far the pointer has taken it since: every panel's hand moves by
+    // that one displacement from where its own vertex was.
+    hands: {},
     rects: [],          // the panels' rectangles in the canvas, CSS px
   };
   const recorder = window.clothRecorder.create();
@@ -173,6 +178,7 @@
     s.base = base;
     s.baseNext = 0;
     s.pinEdits = {};
+    s.hands = {};
     s.sceneText = text;
     s.sceneObj = obj;
     s.preset = preset;
@@ -851,18 +857,43 @@
       const pos = s.panels[Math.min(panel, s.panels.length - 1)].cloth.pos;
       return [pos[2 * k], pos[2 * k + 1]];
     },
+    // One cloth: the hand takes hold at (x, y) and goes where the pointer takes it. Compare
+    // mode: each panel's hand takes hold of its own vertex where it is (the panels' cloths
+    // differ, so one panel's point would move the others' vertex at once, and a tap would
+    // fling them) and moves by the pointer's displacement (recorded as a grab with no `to`
+    // and moves `by`).
     grab: function (k, x, y) {
       takeOver();
-      for (let i = 0; i < s.panels.length; i++) s.panels[i].run.ops.grab(k, x, y);
-      recorder.grab(s.frames, k, x, y);
+      if (s.panels.length > 1) {
+        for (let i = 0; i < s.panels.length; i++) {
+          const pos = s.panels[i].cloth.pos;
+          s.panels[i].run.ops.grab(k, pos[2 * k], pos[2 * k + 1]);
+        }
+        s.hands[k] = { x: x, y: y, dx: 0, dy: 0 };
+        recorder.grabHere(s.frames, k);
+      } else {
+        s.panels[0].run.ops.grab(k, x, y);
+        recorder.grab(s.frames, k, x, y);
+      }
       touched();
     },
     move: function (k, x, y) {
+      const hand = s.hands[k];
+      if (s.panels.length > 1 && hand) {
+        const dx = x - hand.x, dy = y - hand.y, dx0 = hand.dx, dy0 = hand.dy;
+        if (dx === dx0 && dy === dy0) return;   // a hand held still changes nothing
+        takeOver();
+        for (let i = 0; i < s.panels.length; i++) s.panels[i].run.ops.move_by(k, dx, dy);
+        hand.dx = dx; hand.dy = dy;
+        recorder.moveBy(s.frames, k, dx, dy, dx0, dy0);
+        touched();
+        return;
+      }
       // where the hand is (a hand of finite strength's vertex may be short of it)
-      const hand = s.cloth.target, x0 = hand[2 * k], y0 = hand[2 * k + 1];
+      const target = s.cloth.target, x0 = target[2 * k], y0 = target[2 * k + 1];
       if (x === x0 && y === y0) return;       // a hand held still changes nothing
       takeOver();
-      for (let i = 0; i < s.panels.length; i++) s.panels[i].run.ops.move(k, x, y);
+      s.panels[0].run.ops.move(k, x, y);
       recorder.move(s.frames, k, x, y, x0, y0);
       touched();
     },

@@ -24,6 +24,9 @@ window.clothRecorder = (function () {
   const MAX_ACTIONS = 100000;            // cloth/scene.py MAX_ACTIONS
   const OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut'];
   const GRAB = 0, MOVE = 1, RELEASE = 2, PIN = 3, UNPIN = 4, SET = 5, CUT = 6;
+  // Compare mode's forms (each panel holds its own vertex where it is, and every hand moves by
+  // one displacement): a grab with no `to`, a move `by` [dx, dy] from where the hand took hold.
+  const GRAB_HERE = 7, MOVE_BY = 8;
   const FIRST_CAPACITY = 1024;
 
   function create() {
@@ -69,10 +72,28 @@ window.clothRecorder = (function () {
       if (k >= 0 && k < runLast.length) runLast[k] = -1;
     }
 
+    // A move (MOVE: to (x, y); MOVE_BY: by (x, y)) of vertex k from (x0, y0) at frame f,
+    // coalesced with the run of moves of k in that frame.
+    function moved(f, op, k, x, y, x0, y0) {
+      if (x === x0 && y === y0) return;               // the core did nothing either
+      const last = runFrame[k] === f ? runLast[k] : -1;
+      if (last >= 0 && !(x === runFromX[k] && y === runFromY[k])) {
+        xOf[last] = x; yOf[last] = y;                 // still a move away from its start
+        return;
+      }
+      if (!room(f)) return;
+      runFrame[k] = f;
+      runFromX[k] = last >= 0 ? xOf[last] : x0;
+      runFromY[k] = last >= 0 ? yOf[last] : y0;
+      runLast[k] = push(f, op, k, x, y);
+    }
+
     function actionAt(i) {
       const op = opOf[i];
       if (op === SET) return { frame: frameOf[i], op: 'set', scene: settings[vertexOf[i]] };
       if (op === CUT) return { frame: frameOf[i], op: 'cut', from: [fromX[i], fromY[i]], to: [xOf[i], yOf[i]] };
+      if (op === GRAB_HERE) return { frame: frameOf[i], op: 'grab', vertex: vertexOf[i] };
+      if (op === MOVE_BY) return { frame: frameOf[i], op: 'move', vertex: vertexOf[i], by: [xOf[i], yOf[i]] };
       const a = { frame: frameOf[i], op: OPS[op], vertex: vertexOf[i] };
       if (op === GRAB || op === MOVE) a.to = [xOf[i], yOf[i]];
       return a;
@@ -98,6 +119,8 @@ window.clothRecorder = (function () {
         runLast.fill(-1, 0, n);
       },
       grab: function (f, k, x, y) { other(f, GRAB, k, x, y); },
+      // Vertex k held where it is, in each panel (compare mode).
+      grabHere: function (f, k) { other(f, GRAB_HERE, k, 0, 0); },
       release: function (f, k) { other(f, RELEASE, k, 0, 0); },
       pin: function (f, k) { other(f, PIN, k, 0, 0); },
       unpin: function (f, k) { other(f, UNPIN, k, 0, 0); },
@@ -114,19 +137,9 @@ window.clothRecorder = (function () {
         push(f, SET, settings.length - 1, 0, 0);
       },
       // Vertex k moved from (x0, y0) to (x, y) at frame f.
-      move: function (f, k, x, y, x0, y0) {
-        if (x === x0 && y === y0) return;               // the core did nothing either
-        const last = runFrame[k] === f ? runLast[k] : -1;
-        if (last >= 0 && !(x === runFromX[k] && y === runFromY[k])) {
-          xOf[last] = x; yOf[last] = y;                 // still a move away from its start
-          return;
-        }
-        if (!room(f)) return;
-        runFrame[k] = f;
-        runFromX[k] = last >= 0 ? xOf[last] : x0;
-        runFromY[k] = last >= 0 ? yOf[last] : y0;
-        runLast[k] = push(f, MOVE, k, x, y);
-      },
+      move: function (f, k, x, y, x0, y0) { moved(f, MOVE, k, x, y, x0, y0); },
+      // The hands holding k moved by (dx, dy) from where they took hold, (dx0, dy0) before.
+      moveBy: function (f, k, dx, dy, dx0, dy0) { moved(f, MOVE_BY, k, dx, dy, dx0, dy0); },
       // A person took over a replay at frame f: the script's later actions are gone.
       truncate: function (f) {
         scripted = scripted.filter(function (a) { return a.frame <= f; });
@@ -162,7 +175,8 @@ window.clothRecorder = (function () {
       if (a.op === 'set') { out.push({ frame: a.frame, op: 'set', scene: a.keys }); continue; }
       if (a.op === 'cut') { out.push({ frame: a.frame, op: 'cut', from: [a.from_x, a.from_y], to: [a.to_x, a.to_y] }); continue; }
       const o = { frame: a.frame, op: a.op, vertex: a.vertex };
-      if (a.has_to) o.to = [a.to_x, a.to_y];
+      if (a.by) o.by = [a.to_x, a.to_y];
+      else if (a.has_to) o.to = [a.to_x, a.to_y];
       out.push(o);
     }
     return out;

@@ -41,3 +41,9 @@ def bytes_under(node, name, inside=False):
     serialisation of the result, which grow with the run's length, not with the frames."""
     inside = inside or node['callFrame']['functionName'] == name
     return (node['selfSize'] if inside else 0) + sum(bytes_under(c, name, inside) for c in node['children'])
+
+
+def load_paused(pg, text):
+    """Load a scene and pause in one task: no animation frame runs between them (from two
+    calls, a loaded machine ran frames in the gap, and a test's frame numbers drifted)."""
+    pg.js('(t) => { clothApp.loadScene(t); clothApp.setPaused(true); }', text)

@@ -7,7 +7,7 @@ import random
 
 import pytest
 
-from browser_helpers import DIST, free_vertex, near
+from browser_helpers import DIST, free_vertex, near, load_paused
 
 COLS, ROWS = 40, 30      # the default preset (curtain)
 
@@ -246,8 +246,7 @@ def test_a_grid_change_keeps_pins_at_their_row_and_column(open_page):
              'actions': [{'frame': 5, 'op': 'grab', 'vertex': 145, 'to': [0.3, -0.2]},
                          {'frame': 9, 'op': 'release', 'vertex': 145},
                          {'frame': 2, 'op': 'pin', 'vertex': 18}]}
-    pg.js('(t) => clothApp.loadScene(t)', json.dumps(scene))
-    pg.js('clothApp.setPaused(true)')
+    load_paused(pg, json.dumps(scene))
     pg.mouse.click(*pg.state()['screen'][3 * 20 + 4], button='right')   # a person's pin at (3, 4)
     set_input(pg, '#cols', '10')
     info = pg.info()
@@ -285,8 +284,7 @@ def test_scripted_pins_are_not_taken_for_a_persons(open_page):
     pg = open_page()
     scene = {'cols': 20, 'rows': 15, 'spacing': 0.05, 'pins': [0, 5, 10, 14, 19],
              'actions': [{'frame': 20, 'op': 'unpin', 'vertex': 5}, {'frame': 25, 'op': 'pin', 'vertex': 22}]}
-    pg.js('(t) => clothApp.loadScene(t)', json.dumps(scene))
-    pg.js('clothApp.setPaused(true)')
+    load_paused(pg, json.dumps(scene))
     pg.js('clothApp.advance(40)')
     set_input(pg, '#cols', '10')
     obj = json.loads(pg.info()['scene'])

@@ -107,6 +107,15 @@ SCENES = {
         {'frame': 30, 'op': 'grab', 'vertex': 45},
         {'frame': 40, 'op': 'move', 'vertex': 45, 'to': [0.9, -1.6]},
         {'frame': 60, 'op': 'release', 'vertex': 45}]), 80),
+    # Compare mode's hands: held where they are, moved by a displacement (a pin too).
+    'hands-moved-by': (grid(7, 6, pins=[0, 6], actions=[
+        {'frame': 5, 'op': 'grab', 'vertex': 38},
+        {'frame': 5, 'op': 'grab', 'vertex': 6},
+        {'frame': 9, 'op': 'move', 'vertex': 38, 'by': [0.2, -0.35]},
+        {'frame': 12, 'op': 'move', 'vertex': 6, 'by': [0.1, 0.05]},
+        {'frame': 15, 'op': 'move', 'vertex': 38, 'by': [-0.1, 0.3]},
+        {'frame': 20, 'op': 'release', 'vertex': 38},
+        {'frame': 21, 'op': 'release', 'vertex': 6}]), 40),
     'teleport': (grid(5, 5, pins=[0, 4], actions=[
         {'frame': 1, 'op': 'grab', 'vertex': 22, 'to': [100.0, -100.0]},
         {'frame': 2, 'op': 'release', 'vertex': 22}]), 40),
@@ -232,7 +241,9 @@ def scenes(draw):
         if op in ('move', 'release') and held:
             k = draw(st.sampled_from(sorted(held)))
         a = {'frame': frame, 'op': op, 'vertex': k}
-        if op == 'move' or (op == 'grab' and draw(st.booleans())):
+        if op == 'move' and draw(st.booleans()):
+            a['by'] = [draw(coord), draw(coord)]   # compare mode's form: from where it took hold
+        elif op == 'move' or (op == 'grab' and draw(st.booleans())):
             a['to'] = [draw(coord), draw(coord)]
         actions.append(a)
     s['actions'] = actions

@@ -13,7 +13,7 @@ import sys
 import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-from browser_helpers import DIST, ROOT, bytes_under, wait_until
+from browser_helpers import DIST, ROOT, bytes_under, wait_until, load_paused
 
 SMALL = {'cols': 12, 'rows': 9, 'spacing': 0.1, 'pins': [0, 11], 'damping': 1}
 
@@ -42,8 +42,7 @@ def assert_replays(pg, with_frames=False):
 
 def load_small(pg, **keys):
     scene = dict(SMALL, **keys)
-    pg.js('(t) => clothApp.loadScene(t)', json.dumps(scene))
-    pg.js('clothApp.setPaused(true)')
+    load_paused(pg, json.dumps(scene))
     return scene
 
 
@@ -192,8 +191,7 @@ def test_a_scene_with_scripted_actions_and_a_persons_gestures(open_page):
               'actions': [{'frame': 30, 'op': 'grab', 'vertex': 299},
                           {'frame': 60, 'op': 'move', 'vertex': 299, 'to': [1.4, -0.3]},
                           {'frame': 90, 'op': 'release', 'vertex': 299}]}
-    pg.js('(t) => clothApp.loadScene(t)', json.dumps(readme))
-    pg.js('clothApp.setPaused(true)')
+    load_paused(pg, json.dumps(readme))
     pg.js('clothApp.advance(40)')
     x, y = screen(pg, 290)
     pg.mouse.move(x, y)

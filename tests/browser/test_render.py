@@ -4,6 +4,8 @@ import json
 
 import pytest
 
+from browser_helpers import load_paused
+
 # Four vertices in a row, 1 m apart, all pinned, no gravity: nothing moves unless dragged.
 ROW = {'cols': 4, 'rows': 1, 'spacing': 1.0, 'pins': [0, 1, 2, 3], 'gravity': [0, 0],
        'solver': 'jakobsen'}
@@ -14,8 +16,7 @@ BACKGROUND_MAX = 30  # every background channel is below this
 def stretched_row(pg, lift_px=60, drag_px=0):
     """Load ROW, then drag the pinned end vertex 3 up (and right): edge 2-3 stretches,
     edges 0-1 and 1-2 keep their rest length. Returns state()."""
-    pg.js('(t) => clothApp.loadScene(t)', json.dumps(ROW))
-    pg.js('clothApp.setPaused(true)')
+    load_paused(pg, json.dumps(ROW))
     x, y = pg.state()['screen'][3]
     pg.mouse.move(x, y)
     pg.mouse.down()

@@ -9,7 +9,7 @@ import sys
 
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-from browser_helpers import ROOT, bytes_under
+from browser_helpers import ROOT, bytes_under, load_paused
 
 SMALL = {'cols': 14, 'rows': 10, 'spacing': 0.1, 'pins': [0, 4, 9, 13], 'damping': 1}
 
@@ -26,8 +26,7 @@ def replays(pg):
 
 
 def load(pg, **keys):
-    pg.js('(t) => clothApp.loadScene(t)', json.dumps(dict(SMALL, **keys)))
-    pg.js('clothApp.setPaused(true)')
+    load_paused(pg, json.dumps(dict(SMALL, **keys)))
     pg.js('clothApp.advance(30)')
 
 
