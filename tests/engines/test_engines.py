@@ -546,8 +546,9 @@ PAIR = [{'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}, {'solver': 'xpb
 
 
 def test_compare_mode(open_page):
-    """A real mouse drag in panel 2 holds the hand under the pointer there and in panel 1, where
-    the seed's method puts the vertex at it; the recording replays each panel in the CLI."""
+    """A real mouse drag in panel 2 holds the hand under the pointer there, and panel 1's hand
+    moves by the same displacement (the seed's method puts the vertex at it); the recording
+    replays each panel in the CLI."""
     pg = open_page('?paused=1')
     assert pg.js('(l) => clothApp.compare(l)', PAIR)
     pg.js('clothApp.advance(30)')
