@@ -744,14 +744,14 @@
                       complete: recorder.complete(s.frames), replayEnd: s.replayEnd });
     if (s.panels.length > 1) {
       s.panels.forEach(function (p, i) {
-        // Two lines, each cut short with an ellipsis where the panel is narrow (style.css); a
-        // narrow panel (a phone, four panels) gets the short label: the solver and its steps,
-        // the cost and the RMS strain.
+        // A narrow panel (a phone, four panels) gets the short label: the solver and its
+        // steps; the RMS strain and the cost. The numbers come first on their line and are
+        // never cut (compare.js).
         const r = s.rects[i], small = !r || r.w < 340, label = measure.label(p.cloth);
-        compareUI.setLabel(i, (i + 1) + ' · ' + (small ? label.split(',')[0] : label) + '\n' +
-          (Number.isFinite(p.simMs) ? p.simMs.toFixed(2) + (small ? ' ms' : ' ms/frame') : 'at rest') +
-          ' · ' + (small ? 'rms ' : 'strain rms ') + fmt(p.cloth.rms_strain) +
-          (small ? '' : ' · max ' + fmt(p.cloth.max_strain)));
+        const ms = Number.isFinite(p.simMs) ? p.simMs.toFixed(2) + (small ? ' ms' : ' ms/frame') : 'at rest';
+        compareUI.setLabel(i, (i + 1) + ' · ' + (small ? label.split(',')[0] : label),
+          small ? 'rms ' + fmt(p.cloth.rms_strain) + ' · ' + ms
+                : 'strain rms ' + fmt(p.cloth.rms_strain) + ' · max ' + fmt(p.cloth.max_strain) + ' · ' + ms);
       });
     }
   }

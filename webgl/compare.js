@@ -166,8 +166,15 @@ window.clothCompare = (function () {
     // Labels over the panels: number, setting, and the readouts (at the readout rate).
     function placeLabels(rects) {
       while (labelEls.length < rects.length) {
+        // Two lines: what the panel runs (cut short with an ellipsis where the panel is
+        // narrow) and the numbers, RMS strain first, never cut: the number being compared.
         const el = document.createElement('div');
         el.className = 'panel-label';
+        const head = document.createElement('div'), numbers = document.createElement('div');
+        head.className = 'panel-label-head';
+        numbers.className = 'panel-label-numbers';
+        el.appendChild(head);
+        el.appendChild(numbers);
         labels.appendChild(el);
         labelEls.push(el);
       }
@@ -178,13 +185,16 @@ window.clothCompare = (function () {
         const r = rects[i];
         el.style.left = (r.x + 6) + 'px';      // the canvas fills the stage from its corner
         el.style.top = (r.y + 6) + 'px';
-        el.style.maxWidth = Math.max(60, r.w - 12) + 'px';
+        el.firstChild.style.maxWidth = Math.max(60, r.w - 30) + 'px';  // 12 of margins, 18 of padding and border
         el.style.borderLeftColor = window.clothCharts.COLORS[i];
       }
     }
 
-    function setLabel(i, text) {
-      if (i < labelEls.length && labelEls[i].textContent !== text) labelEls[i].textContent = text;
+    function setLabel(i, head, numbers) {
+      if (i >= labelEls.length) return;
+      const h = labelEls[i].firstChild, n = labelEls[i].lastChild;
+      if (h.textContent !== head) h.textContent = head;
+      if (n.textContent !== numbers) n.textContent = numbers;
     }
 
     return { render: render, placeLabels: placeLabels, setLabel: setLabel,

@@ -275,3 +275,58 @@ def test_panel_settings_in_the_editor(open_page):
     sel = pg.locator('#compare-list select[data-key=tethers]').nth(0)
     sel.select_option('false')
     assert json.loads(panels(pg)[0]['scene'])['tethers'] is False
+
+
+# Issue #22.6: the number being compared stays in sight at every size and panel count.
+LONGEST = {'solver': 'xpbd', 'substeps': 12, 'iterations': 3, 'tethers': True, 'shear': True,
+           'compliance': 0.00123, 'tolerance': 0.00001}
+LABEL_RMS = '''(i) => {
+  const el = document.querySelectorAll('.panel-label')[i], line = el.lastChild;
+  const text = line.textContent, at = text.indexOf('rms ');
+  const end = text.indexOf(' ', at + 4) < 0 ? text.length : text.indexOf(' ', at + 4);
+  const range = document.createRange();
+  range.setStart(line.firstChild, at);
+  range.setEnd(line.firstChild, end);
+  const box = (e) => e.getBoundingClientRect().toJSON();
+  const covers = ['legend', 'hud', 'charts', 'banner', 'panel'].map((id) => document.getElementById(id))
+    .filter((e) => e.offsetParent !== null || getComputedStyle(e).position === 'fixed')
+    .filter((e) => getComputedStyle(e).display !== 'none' && getComputedStyle(e).visibility !== 'hidden')
+    .map((e) => [e.id, box(e)]);
+  return {text: text.slice(at + 4, end), rms: range.getBoundingClientRect().toJSON(), label: box(el),
+          stage: box(document.getElementById('stage')), covers: covers};
+}'''
+
+
+@pytest.mark.parametrize('size', [(800, 600), (360, 640), (390, 844), (640, 480), (1366, 768)])
+def test_every_panel_label_keeps_its_rms_strain_in_sight(open_page, size):
+    pg = open_page(viewport={'width': size[0], 'height': size[1]})
+    for n in (2, 3, 4):
+        pg.js('(l) => clothApp.compare(l)', ([{'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}] + [LONGEST] * 3)[:n])
+        pg.js('clothApp.setPaused(true)')
+        pg.js('clothApp.advance(20)')
+        pg.wait_for_timeout(600)                       # a readout (250 ms) or two
+        ps = panels(pg)
+        assert pg.locator('.panel-label:visible').count() == n
+        for i in range(n):
+            got = pg.js(LABEL_RMS, i)
+            where = (size, n, i, got)
+            assert abs(float(got['text']) - ps[i]['rms_strain']) <= half_a_last_digit(got['text']), where
+            r, lab, st = got['rms'], got['label'], got['stage']
+            assert r['width'] > 10, where
+            assert lab['left'] <= r['left'] and r['right'] <= lab['right'], where      # not cut off
+            assert st['left'] <= r['left'] and r['right'] <= st['right'] and 0 <= r['top'] and r['bottom'] <= st['bottom'], where
+            for name, c in got['covers']:
+                if name == 'panel' and c['left'] >= st['right']:
+                    continue                            # the panel beside the stage
+                assert not overlap(r, c), (name, where)
+
+
+def overlap(a, b):
+    return a['left'] < b['right'] and b['left'] < a['right'] and a['top'] < b['bottom'] and b['top'] < a['bottom']
+
+
+def half_a_last_digit(text):
+    """0.0012 -> 5e-5, 1.23e-5 -> 5e-8: how far a shown number can be from what it rounds."""
+    mantissa, _, exponent = text.partition('e')
+    decimals = len(mantissa.partition('.')[2])
+    return 0.5 * 10.0 ** (-decimals + int(exponent or 0)) * 1.0000001
