@@ -879,7 +879,8 @@
     },
     move: function (k, x, y) {
       const hand = s.hands[k];
-      if (s.panels.length > 1 && hand) {
+      if (s.panels.length > 1) {
+        if (!hand) return;                      // no hand of this page's holds k
         const dx = x - hand.x, dy = y - hand.y, dx0 = hand.dx, dy0 = hand.dy;
         if (dx === dx0 && dy === dy0) return;   // a hand held still changes nothing
         takeOver();
