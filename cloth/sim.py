@@ -929,9 +929,7 @@ def move_by(cloth, k, dx, dy):
     """Move the hand holding vertex k to (dx, dy) from where it took hold: compare mode's
     panels each hold their own vertex where it is, and one drag moves every hand by the same
     displacement."""
-    check_vertex(cloth, k)
-    if cloth.held[k] == 0:
-        raise SceneError('vertex: move needs a held vertex (grab it first)')
+    check_vertex(cloth, k)         # before reading hold_from; move checks that k is held
     move(cloth, k, cloth.hold_from[k + k] + dx, cloth.hold_from[k + k + 1] + dy)
 
 
