@@ -328,5 +328,55 @@
     return { pos: Array.from(cl.pos), speed: fastest(cl) };
   };
 
+  // ---- the README's other figures (python -m cloth.bench --figures) ------------------------
+
+  // Frames until the cloth sleeps (-1: not within `cap`), its positions then, and how far any
+  // vertex was, over the last second before, from where it fell asleep.
+  B.sleep = function (text, cap) {
+    const r = M.run(clothCore.load(text)), cl = r.cloth, n = cl.n_verts;
+    const ring = [];
+    for (let i = 0; i < 60; i++) ring.push(new Float64Array(2 * n));
+    let f = 0;
+    while (f < cap && !cl.asleep) { M.step(r, 1, 0); ring[f % 60].set(cl.pos); f++; }
+    let swing = 0;
+    if (cl.asleep) {
+      for (let i = 0; i < Math.min(f, 60); i++) {
+        const p = ring[i];
+        for (let k = 0; k < n; k++) {
+          swing = Math.max(swing, Math.hypot(p[2 * k] - cl.pos[2 * k], p[2 * k + 1] - cl.pos[2 * k + 1]));
+        }
+      }
+    }
+    return { frames: cl.asleep ? f : -1, pos: Array.from(cl.pos), swing: swing };
+  };
+
+  // Vertex k's position after every frame, [x0, y0, x1, y1, ...].
+  B.track = function (text, frames, k) {
+    const r = M.run(clothCore.load(text)), cl = r.cloth, out = [];
+    for (let f = 0; f < frames; f++) { M.step(r, 1, 0); out.push(cl.pos[2 * k], cl.pos[2 * k + 1]); }
+    return out;
+  };
+
+  // Over `frames` frames: the fastest free vertex (frame displacement / dt; a vertex pinned or
+  // held is where the scene puts it), the highest free vertex, the vertex-steps the max_speed
+  // net slowed, and whether every position stayed finite.
+  B.motion = function (text, frames) {
+    const r = M.run(clothCore.load(text)), cl = r.cloth, n = cl.n_verts;
+    const before = Float64Array.from(cl.pos);
+    let fastestFree = 0, top = -Infinity, finite = true;
+    for (let f = 0; f < frames; f++) {
+      M.step(r, 1, 0);
+      for (let k = 0; k < n; k++) {
+        const x = cl.pos[2 * k], y = cl.pos[2 * k + 1];
+        if (!Number.isFinite(x) || !Number.isFinite(y)) finite = false;
+        if (cl.pinned[k] !== 0 || cl.held[k] !== 0) continue;
+        fastestFree = Math.max(fastestFree, Math.hypot(x - before[2 * k], y - before[2 * k + 1]) / cl.dt);
+        if (y > top) top = y;
+      }
+      before.set(cl.pos);
+    }
+    return { fastest: fastestFree, top: top, clamped: cl.clamped, finite: finite };
+  };
+
   return true;
 })();

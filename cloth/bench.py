@@ -847,24 +847,30 @@ def main(argv=None):
     ap.add_argument('--physics', action='store_true',
                     help='only the release table and the strain fields at rest, on the page\'s '
                          'presets (OUT/physics.md, .json, .svg; with --quick: 10x10 and 30x30)')
+    ap.add_argument('--figures', action='store_true',
+                    help='only the README\'s other figures: sleep, the pendulum, the seed\'s '
+                         'stretch, one sweep per step, the carried corner, tethers, drawing '
+                         '(OUT/figures.md, .json; with --quick: the small sizes)')
     args = ap.parse_args(argv)
     progress = Progress()
-    if args.physics:
-        from cloth import bench_physics
+    if args.physics or args.figures:
+        from cloth import bench_physics, bench_figures
+        module, name = (bench_physics, 'physics') if args.physics else (bench_figures, 'figures')
         try:
-            md, result = bench_physics.run(args.quick, progress, open_page)
+            md, result = module.run(args.quick, progress, open_page)
         except BenchError as err:
             sys.stderr.write('error: %s\n' % err)
             return 1
         os.makedirs(args.out, exist_ok=True)
-        name = 'physics' + (QUICK_SUFFIX if args.quick else '')
+        name += QUICK_SUFFIX if args.quick else ''
         with open(os.path.join(args.out, name + '.md'), 'w', encoding='utf-8') as f:
             f.write(md)
         with open(os.path.join(args.out, name + '.json'), 'w', encoding='utf-8') as f:
             json.dump(json_safe(result), f, indent=1, allow_nan=False)
             f.write('\n')
-        with open(os.path.join(args.out, name + '.svg'), 'w', encoding='utf-8') as f:
-            f.write(bench_physics.svg_release(result))
+        if args.physics:
+            with open(os.path.join(args.out, name + '.svg'), 'w', encoding='utf-8') as f:
+                f.write(bench_physics.svg_release(result))
         sys.stdout.write(md)
         return 0
     if args.gestures:

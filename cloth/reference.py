@@ -45,6 +45,20 @@ def slack_hang(cols, rows, spacing, span):
     return [(top[col][0], top[col][1] - row * spacing) for row in range(rows) for col in range(cols)]
 
 
+def elliptic_k(m):
+    """Complete elliptic integral of the first kind K(m), m = k^2, by the AGM."""
+    a, b = 1.0, math.sqrt(1.0 - m)
+    while abs(a - b) > 1e-15:
+        a, b = (a + b) / 2, math.sqrt(a * b)
+    return math.pi / (2 * a)
+
+
+def pendulum_period(length, amplitude, g=9.81):
+    """Exact period of a point pendulum released from rest `amplitude` radians from the
+    vertical: T = 4 sqrt(L / g) K(sin^2(amplitude / 2))."""
+    return 4 * math.sqrt(length / g) * elliptic_k(math.sin(amplitude / 2) ** 2)
+
+
 def rest_grid(cols, rows, spacing):
     return [(c * spacing, -r * spacing) for r in range(rows) for c in range(cols)]
 

@@ -36,12 +36,6 @@ def xy(cloth, k):
     return cloth.pos[2 * k], cloth.pos[2 * k + 1]
 
 
-def elliptic_k(m):
-    """Complete elliptic integral of the first kind K(m), m = k^2, by the AGM."""
-    a, b = 1.0, math.sqrt(1.0 - m)
-    while abs(a - b) > 1e-15:
-        a, b = (a + b) / 2, math.sqrt(a * b)
-    return math.pi / (2 * a)
 
 
-__all__ = ['scene', 'curtain', 'result', 'all_finite', 'step', 'xy', 'elliptic_k', 'load']
+__all__ = ['scene', 'curtain', 'result', 'all_finite', 'step', 'xy', 'load']
