@@ -330,24 +330,25 @@
 
   // ---- the README's other figures (python -m cloth.bench --figures) ------------------------
 
-  // Frames until the cloth sleeps (-1: not within `cap`), its positions then, and how far any
-  // vertex was, over the last second before, from where it fell asleep.
+  // Frames until the cloth sleeps (-1: not within `cap`), its positions then, how far any
+  // vertex was over the last second from where it ended (asleep or not), and the largest
+  // distance any vertex moved in one frame over that second.
   B.sleep = function (text, cap) {
     const r = M.run(clothCore.load(text)), cl = r.cloth, n = cl.n_verts;
     const ring = [];
     for (let i = 0; i < 60; i++) ring.push(new Float64Array(2 * n));
     let f = 0;
     while (f < cap && !cl.asleep) { M.step(r, 1, 0); ring[f % 60].set(cl.pos); f++; }
-    let swing = 0;
-    if (cl.asleep) {
-      for (let i = 0; i < Math.min(f, 60); i++) {
-        const p = ring[i];
-        for (let k = 0; k < n; k++) {
-          swing = Math.max(swing, Math.hypot(p[2 * k] - cl.pos[2 * k], p[2 * k + 1] - cl.pos[2 * k + 1]));
-        }
+    let swing = 0, jump = 0;
+    const last = Math.min(f, 60);
+    for (let i = 0; i < last; i++) {
+      const p = ring[(f - 1 - i) % 60], q = i + 1 < last ? ring[(f - 2 - i) % 60] : null;
+      for (let k = 0; k < n; k++) {
+        swing = Math.max(swing, Math.hypot(p[2 * k] - cl.pos[2 * k], p[2 * k + 1] - cl.pos[2 * k + 1]));
+        if (q) jump = Math.max(jump, Math.hypot(p[2 * k] - q[2 * k], p[2 * k + 1] - q[2 * k + 1]));
       }
     }
-    return { frames: cl.asleep ? f : -1, pos: Array.from(cl.pos), swing: swing };
+    return { frames: cl.asleep ? f : -1, pos: Array.from(cl.pos), swing: swing, jump: jump };
   };
 
   // Vertex k's position after every frame, [x0, y0, x1, y1, ...].

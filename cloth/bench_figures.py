@@ -24,7 +24,7 @@ from cloth.reference import pendulum_period, slack_hang
 # Large cloth and Tearable are the Curtain at other default grids (and Tearable with a tear
 # limit): at the same size they are the same scene at rest, measured once as the Curtain.
 PRESETS = ['curtain', 'corners', 'chain']
-SLEEP_SIZES = [10, 30, 60, 120]
+SLEEP_SIZES = [10, 30, 60, 120, 200]
 SLEEP_CAP = 1800               # 30 s: a preset not asleep by then is reported as awake
 AWAKE_MORE = 600               # the same cloth kept awake 10 s longer
 PENDULUM_LENGTHS = [0.25, 1.0, 4.0]
@@ -75,7 +75,7 @@ def sleep_table(page, quick, progress):
         cap = 12000 if name.startswith('pendulum') else SLEEP_CAP
         r = page.evaluate('([t, c]) => __bench.sleep(t, c)', [json.dumps(scene), cap])
         row = {'scene': name, 'n': n, 'frames': r['frames'], 'cap': cap, 'swing': r['swing'],
-               'extent': extent(scene), 'awake_gap': None}
+               'jump': r['jump'], 'extent': extent(scene), 'awake_gap': None}
         if r['frames'] >= 0:
             awake = dict(scene, sleep=False)
             far = page.evaluate('([t, f]) => __bench.rest(t, f)',
@@ -85,6 +85,26 @@ def sleep_table(page, quick, progress):
         progress('sleep %s %s: %s frames, swing %.2g m, awake gap %s (%.0f s)' % (
             name, n, r['frames'], r['swing'],
             '-' if row['awake_gap'] is None else '%.2g m' % row['awake_gap'], time.time() - t0))
+    return rows
+
+
+CHATTER_SIZE = 120
+CHATTER = [('default', {}), ('2 sweeps a step', {'iterations': 2}), ('16 substeps', {'substeps': 16}),
+           ('no line solves', {'lines': False})]
+
+
+def chatter_table(page, quick, progress):
+    """The Two corners hang at 120x120 after 30 s, awake, under settings that might calm its
+    top row: how far any vertex was over the last second from where it ended, and the largest
+    step in a frame."""
+    rows = []
+    if quick:
+        return rows
+    for label, keys in CHATTER:
+        scene = dict(preset(page, 'corners', CHATTER_SIZE), sleep=False, **keys)
+        r = page.evaluate('([t, c]) => __bench.sleep(t, c)', [json.dumps(scene), SLEEP_CAP])
+        rows.append({'config': label, 'n': CHATTER_SIZE, 'swing': r['swing'], 'jump': r['jump']})
+        progress('chatter %s: swing %.2g m, step %.2g m' % (label, r['swing'], r['jump']))
     return rows
 
 
@@ -282,21 +302,29 @@ def markdown(res):
                ' '.join(__doc__.split('\n\n')[0].split())), '']
     out += ['## Sleep', '',
             'Each preset as the page makes it (its material, default solver), from its start; '
-            'frames until it is asleep (-1: not within %d), how far any vertex was from where '
-            'it fell asleep over the last second before, and how far the same cloth kept awake '
+            'frames until it is asleep (not within %d: still moving), how far any vertex was '
+            'over the last second from where it ended (asleep or not), the largest distance '
+            'a vertex moved in one frame over that second, and how far the same cloth kept awake '
             '%d frames longer is from it (m and of the extent). Large cloth and Tearable are '
             'the Curtain at other default grids: at the same size, the same scene at rest.'
             % (SLEEP_CAP, AWAKE_MORE), '',
-            '| scene | size | asleep after (frames) | swing before (m) | from the cloth kept awake (m) | of the extent |',
-            '|---|---|---|---|---|---|']
+            '| scene | size | asleep after (frames) | last second: swing (m) | largest step in a frame (m) | from the cloth kept awake (m) | of the extent |',
+            '|---|---|---|---|---|---|---|']
     for r in res['sleep']:
         gap = r['awake_gap']
-        out.append('| %s | %s | %s | %s | %s | %s |' % (
+        out.append('| %s | %s | %s | %s | %s | %s | %s |' % (
             r['scene'], '%dx%d' % (r['n'], 1 if r['scene'] == 'chain' else r['n'])
             if not r['scene'].startswith('pendulum') else '-',
             r['frames'] if r['frames'] >= 0 else 'not within %d' % r['cap'],
-            g(r['swing']) if r['frames'] >= 0 else '-', g(gap),
+            g(r['swing']), g(r['jump']), g(gap),
             g(gap / r['extent']) if gap is not None else '-'))
+    if res.get('chatter'):
+        out += ['', 'The Two corners hang at %dx%d, kept awake, after %d frames, under other '
+                'settings: the last second\'s swing and the largest step in a frame.'
+                % (CHATTER_SIZE, CHATTER_SIZE, SLEEP_CAP), '',
+                '| settings | swing (m) | largest step in a frame (m) |', '|---|---|---|']
+        for r in res['chatter']:
+            out.append('| %s | %s | %s |' % (r['config'], g(r['swing']), g(r['jump'])))
     out += ['', '## Pendulum', '',
             'Released horizontally, undamped, 60 Hz: the period against the exact '
             '4 sqrt(L/g) K(1/2), the height lost in the first swing and the energy lost per '
@@ -363,6 +391,7 @@ def run(quick, progress, open_page):
             res['sweeps'] = sweep_table(page, quick, progress)
             res['stretch'] = stretch_table(page, quick, progress)
             res['sleep'] = sleep_table(page, quick, progress)
+            res['chatter'] = chatter_table(page, quick, progress)
 
             def page_of(b):
                 q = b.new_page()
