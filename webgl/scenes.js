@@ -106,9 +106,9 @@ window.clothScenes = (function () {
     // Inextensible: its exact hang is known (cloth/reference.py), and the default meets it. A
     // material hung from two points is not yet something the solver does well: a grid of
     // structural edges carries the whole weight in its top row (no shear stiffness spreads it
-    // into the rows below), whose strain then grows as the grid refines (jersey at the pins:
-    // 6.8% at 30x30, 117% at 120x120), and whose line solves keep a limit cycle (cotton at
-    // 60x60: top-row vertices at 0.3 m/s for good; 5 m/s at 120x120). See the README.
+    // into the rows below), whose strain then grows as the grid refines and whose line solves
+    // keep a limit cycle (the README's "Known limits", measured by the strain table of
+    // `python -m cloth.bench --physics`).
     corners: {
       label: 'Two corners',
       params: { cols: 30, rows: 30, material: 'inextensible' },
@@ -116,8 +116,8 @@ window.clothScenes = (function () {
       pins: function (cols) { return cols > 1 ? [0, cols - 1] : [0]; },
       // Slack: the right corner is carried in to 80% of the width over the first second (a
       // smooth start and stop) and pinned there, so the cloth hangs with its top row sagging
-      // (the scene where shape shows). Carried, not put there at frame 0: a corner moved
-      // 0.2 m in one frame flung the cloth at 11 m/s, up to 0.3 m over its pins.
+      // (the scene where shape shows). Carried, not put there at frame 0: a corner moved there
+      // in one frame flings the cloth (`python -m cloth.bench --figures`, the corner table).
       actions: function (cols, rows, spacing) {
         if (cols < 2) return [];
         const k = cols - 1, x0 = (cols - 1) * spacing, x1 = 0.8 * x0, frames = CARRY_FRAMES;
