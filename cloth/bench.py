@@ -190,6 +190,16 @@ def chunked(total, step):
         done += k
 
 
+def page_of(browser, errors):
+    """A new tab on dist/index.html that may fetch nothing else; page errors go to `errors`."""
+    page = browser.new_page()
+    page.on('pageerror', lambda e: errors.append(str(e)))
+    page.route('**/*', lambda route: route.continue_() if route.request.url.startswith('file:')
+               else route.abort())
+    page.goto('file://' + DIST)
+    return page
+
+
 def open_page(p, progress):
     if not os.path.exists(DIST):
         raise BenchError('dist/index.html is missing: build it with `python build.py`')
@@ -197,13 +207,8 @@ def open_page(p, progress):
     if os.path.exists(SYSTEM_CHROMIUM):
         kwargs['executable_path'] = SYSTEM_CHROMIUM
     browser = p.chromium.launch(**kwargs)
-    page = browser.new_page()
     errors = []
-    page.on('pageerror', lambda e: errors.append(str(e)))
-    # Only the page itself: nothing else may be fetched.
-    page.route('**/*', lambda route: route.continue_() if route.request.url.startswith('file:')
-               else route.abort())
-    page.goto('file://' + DIST)
+    page = page_of(browser, errors)
     if not page.evaluate("() => typeof window.clothCore === 'object' && window.clothCore !== null"
                          " && typeof window.clothCore.load === 'function'"):
         browser.close()

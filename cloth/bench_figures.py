@@ -259,10 +259,14 @@ def tether_table(quick):
 
 # ---- drawing ---------------------------------------------------------------------------------
 
-def draw_table(browser, page_of, progress):
+def draw_table(browser, progress):
+    """Each scene in a tab of its own, the app running as a person sees it (open_page's tab
+    has its loop stopped)."""
+    from cloth.bench import HARNESS, page_of
     rows = []
     for name, n in DRAW:
-        page = page_of(browser)
+        page = page_of(browser, [])
+        page.add_script_tag(path=HARNESS)
         try:
             scene = preset(page, name, n)
             ms = page.evaluate('''([text, frames]) => {
@@ -379,7 +383,6 @@ def markdown(res):
 
 def run(quick, progress, open_page):
     from playwright.sync_api import sync_playwright
-    from cloth.bench import HARNESS
     t0 = time.time()
     res = {'tethers': tether_table(quick)}
     with sync_playwright() as p:
@@ -392,15 +395,7 @@ def run(quick, progress, open_page):
             res['stretch'] = stretch_table(page, quick, progress)
             res['sleep'] = sleep_table(page, quick, progress)
             res['chatter'] = chatter_table(page, quick, progress)
-
-            def page_of(b):
-                q = b.new_page()
-                q.route('**/*', lambda route: route.continue_() if route.request.url.startswith('file:')
-                        else route.abort())
-                q.goto(page.url)
-                q.add_script_tag(path=HARNESS)
-                return q
-            res['draw'] = draw_table(browser, page_of, progress) if not quick else []
+            res['draw'] = draw_table(browser, progress) if not quick else []
         finally:
             browser.close()
     res['meta'] = {'command': 'python -m cloth.bench --figures' + (' --quick' if quick else ''),

@@ -37,5 +37,4 @@ def xy(cloth, k):
 
 
 
-
 __all__ = ['scene', 'curtain', 'result', 'all_finite', 'step', 'xy', 'load']
