@@ -5,6 +5,7 @@ import math
 import pytest
 
 from cloth.sim import frame, grab, move, release, pin, unpin
+from cloth.reference import rest_grid
 from helpers import curtain, load, scene, step
 
 
@@ -62,7 +63,12 @@ def test_a_drag_wakes_it_and_the_cloth_follows_then_rests_again():
         assert not cloth.asleep
     assert cloth.pos[2 * (k + 1)] - nx > 0.1   # dragged 0.29 m to the right, it followed
     release(cloth, k)
-    assert frames_until_asleep(cloth, 2000) is not None
+    slept = frames_until_asleep(cloth, 2000)
+    assert slept is not None and slept > 60, slept
+    # Asleep where it rests: a curtain hangs as its rest grid (cloth/reference.py).
+    worst = max(math.hypot(cloth.pos[2 * j] - x0, cloth.pos[2 * j + 1] - y0)
+                for j, (x0, y0) in enumerate(rest_grid(cloth.cols, cloth.rows, cloth.spacing)))
+    assert worst < 1e-3, worst
 
 
 def test_a_hand_held_still_lets_the_cloth_sleep():

@@ -64,7 +64,7 @@ window.clothCore = (function (api, modules) {
   // on every call, which the hot loop must not do. Errors stay Transcrypt's here;
   // callers that need messages use core.message(e).
   const sim = modules['cloth.sim'] || {};
-  const OPS = ['frame', 'measure', 'grab', 'move', 'move_by', 'release', 'pin', 'unpin', 'toggle_pin', 'nearest', 'cut'];
+  const OPS = ['frame', 'measure', 'grab', 'move', 'move_by', 'release', 'pin', 'unpin', 'nearest', 'cut'];
   core.ops = function (cloth) {
     const ops = {};
     OPS.forEach(function (name) {

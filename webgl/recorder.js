@@ -145,7 +145,6 @@ window.clothRecorder = (function () {
         scripted = scripted.filter(function (a) { return a.frame <= f; });
       },
       count: function () { return scripted.length + count; },
-      gestures: function () { return count; },
       // The frame up to which the recording is complete, given the page's frame count.
       complete: function (frames) { return droppedAt < 0 ? frames : Math.max(droppedAt - 1, 0); },
       full: function () { return droppedAt >= 0; },

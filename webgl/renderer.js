@@ -259,7 +259,6 @@ window.clothRenderer = (function () {
         fitBox = w === undefined ? null : { x: x, y: y, w: Math.max(w, 1), h: Math.max(h, 1) };
         p.fit();
       };
-      p.rect = function () { return box(); };
       p.contains = function (cx, cy) {
         const b = box();
         return cx >= b.x && cx < b.x + b.w && cy >= b.y && cy < b.y + b.h;
