@@ -52,7 +52,6 @@ window.clothCore = (function (api, modules) {
     // it (cloth/scene.py MAX_SCENE_BYTES).
     sceneLimit: function () { const l = api.scene_limit(); return { bytes: l[0], message: l[1] }; },
     message: message,
-    api: api,
   };
   // parseScene(sceneJsonText[, panel]) -> the checked scene, nothing built (cloth/api.py
   // check); with a panel index (from 0), the scene of that panel of its `compare` list.

@@ -180,5 +180,5 @@ window.clothInput = (function () {
     };
   }
 
-  return { attach: attach, PICK_RADIUS: PICK_RADIUS };
+  return { attach: attach };
 })();

@@ -100,7 +100,6 @@ window.clothRecorder = (function () {
     }
 
     return {
-      MAX_ACTIONS: MAX_ACTIONS,
       // A new recording of `scene` (the object as loaded) on n vertices; `actions`: its own
       // actions as the core sorted them (objects).
       start: function (scene, actions, n) {
@@ -181,5 +180,5 @@ window.clothRecorder = (function () {
     return out;
   }
 
-  return { create: create, scriptOf: scriptOf, MAX_ACTIONS: MAX_ACTIONS };
+  return { create: create, scriptOf: scriptOf };
 })();

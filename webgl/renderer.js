@@ -392,5 +392,5 @@ window.clothRenderer = (function () {
     return r;
   }
 
-  return { create: create, STRAIN_BASE: STRAIN_BASE, BACKGROUND: BACKGROUND };
+  return { create: create, STRAIN_BASE: STRAIN_BASE };
 })();
