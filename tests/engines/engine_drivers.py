@@ -13,6 +13,8 @@ import pathlib
 import select
 import shutil
 import subprocess
+import sys
+import threading
 import time
 
 
@@ -32,6 +34,7 @@ FIREFOX = _find('CLOTH_FIREFOX', 'firefox-esr', 'firefox')
 # Debian's webkit2gtk-driver: the driver on PATH, MiniBrowser in the multiarch library folder.
 MINIBROWSER = _find('CLOTH_MINIBROWSER', '/usr/lib/*/webkit2gtk-4.1/MiniBrowser', '/usr/lib/*/webkit2gtk-4.0/MiniBrowser')
 WEBKIT_DRIVER = _find('CLOTH_WEBKIT_DRIVER', 'WebKitWebDriver')
+START_WAIT = 90    # s: a WebKit session that has not answered by then never will
 XVFB = _find('CLOTH_XVFB', 'Xvfb')
 SCREEN = '1280x1024x24'
 
@@ -288,8 +291,37 @@ class WebKit(Engine):
         (config / 'user-dirs.dirs').write_text('XDG_DOWNLOAD_DIR="%s"\n' % self.downloads)
         env = dict(os.environ, DISPLAY=self.display, XDG_CONFIG_HOME=str(config), GDK_SCALE=str(self.scale))
         self.log = pathlib.Path(self.downloads).parent / 'webkit.log'
-        service = Service(executable_path=WEBKIT_DRIVER, log_output=str(self.log), env=env)
-        self.d = webdriver.WebKitGTK(options=options, service=service)
+        # WebKitWebDriver sometimes never answers a new session: its MiniBrowser never
+        # connects, and the request waits forever (seen once in a loaded run, in a restart
+        # for devicePixelRatio 2; the driver's log was empty). A session answers in seconds
+        # even under load, so a start that has not answered in START_WAIT is that hang: the
+        # driver is killed and started afresh, once, saying so on stderr. Any other error,
+        # or a second hang, fails the start.
+        for attempt in (1, 2):
+            service = Service(executable_path=WEBKIT_DRIVER, log_output=str(self.log), env=env)
+            done = {}
+
+            def connect():
+                try:
+                    done['driver'] = webdriver.WebKitGTK(options=options, service=service)
+                except Exception as err:       # handed to the caller below
+                    done['error'] = err
+            thread = threading.Thread(target=connect, daemon=True)
+            thread.start()
+            thread.join(START_WAIT)
+            if not thread.is_alive():
+                if 'error' in done:
+                    raise done['error']
+                self.d = done['driver']
+                break
+            if service.process is not None:
+                service.process.kill()
+            thread.join(30)
+            if attempt == 2:
+                raise RuntimeError('WebKitWebDriver answered no new session within %d s, twice'
+                                   % START_WAIT)
+            sys.stderr.write('\nWebKitWebDriver answered no new session within %d s: started '
+                             'afresh\n' % START_WAIT)
         self.d.set_script_timeout(600)
         self.d.set_page_load_timeout(120)
         self.version = self.d.capabilities.get('browserVersion', '')
