@@ -4,6 +4,9 @@ with CI=true a missing engine fails the run. Tried here by pointing the engines'
 import os
 import subprocess
 import sys
+import time
+
+import pytest
 
 from browser_helpers import ROOT
 
@@ -33,3 +36,31 @@ def test_with_ci_true_a_missing_engine_fails_the_run():
     assert '2 errors' in done.stdout, done.stdout
     assert 'CI=true and firefox is not installed' in done.stdout, done.stdout
     assert 'CI=true and webkit is not installed' in done.stdout, done.stdout
+
+
+def test_a_webkit_driver_that_never_answers_is_started_afresh_then_fails_clearly(tmp_path, monkeypatch,
+                                                                                capsys):
+    # A stand-in for WebKitWebDriver that listens on its port, takes every connection and
+    # answers none: the hang seen once in a loaded CI run. The start must not wait forever.
+    import engine_drivers
+    fake = tmp_path / 'fake-webkit-driver'
+    fake.write_text('#!%s\n' % sys.executable +
+                    'import socket, sys, time\n'
+                    'port = int(sys.argv[sys.argv.index("-p") + 1] if "-p" in sys.argv else\n'
+                    '           [a for a in sys.argv if a.startswith("--port=")][0][7:])\n'
+                    's = socket.socket(); s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)\n'
+                    's.bind(("127.0.0.1", port)); s.listen(16)\n'
+                    'held = []\n'
+                    'while True:\n'
+                    '    held.append(s.accept()[0])\n')
+    fake.chmod(0o755)
+    monkeypatch.setattr(engine_drivers, 'WEBKIT_DRIVER', str(fake))
+    monkeypatch.setattr(engine_drivers, 'START_WAIT', 2)
+    monkeypatch.setattr(engine_drivers, 'MINIBROWSER', '/bin/true')   # never launched
+    downloads = tmp_path / 'downloads'
+    downloads.mkdir()
+    started = time.monotonic()
+    with pytest.raises(RuntimeError, match='answered no new session within 2 s, twice'):
+        engine_drivers.WebKit(':0', str(downloads))
+    assert time.monotonic() - started < 60
+    assert 'answered no new session within 2 s: started afresh' in capsys.readouterr().err
