@@ -1,4 +1,4 @@
-// The benchmark's side in the page (cloth/bench.py injects this file into dist/index.html and
+// The benchmark's side in the page (bench/page.py injects this file into dist/index.html and
 // drives it): groups of configurations, references, the speed-of-light yardstick and the
 // gestures. Every frame it times is stepped, timed and measured by webgl/measure.js, the code
 // the page's compare mode runs, so that what the page shows and what the benchmark reports
@@ -328,7 +328,7 @@
     return { pos: Array.from(cl.pos), speed: fastest(cl) };
   };
 
-  // ---- the README's other figures (python -m cloth.bench --figures) ------------------------
+  // ---- the README's other figures (python -m bench --figures) ------------------------
 
   // Frames until the cloth sleeps (-1: not within `cap`), its positions then, how far any
   // vertex was over the last second from where it ended (asleep or not), and the largest

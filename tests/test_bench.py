@@ -1,4 +1,4 @@
-"""Smoke test of the benchmark: `python -m cloth.bench --quick` runs the shipped page in
+"""Smoke test of the benchmark: `python -m bench --quick` runs the shipped page in
 Chromium and writes its table with the seed's rows. No timing thresholds: machines are noisy."""
 
 import json
@@ -21,7 +21,7 @@ SCENES = ['curtain', 'corners', 'dynamic']
 def quick(tmp_path_factory):
     pytest.importorskip('playwright.sync_api')
     out = tmp_path_factory.mktemp('bench')
-    proc = subprocess.run([sys.executable, '-m', 'cloth.bench', '--quick', '--out', str(out)],
+    proc = subprocess.run([sys.executable, '-m', 'bench', '--quick', '--out', str(out)],
                           cwd=ROOT, capture_output=True, text=True, timeout=600)
     return proc, out
 
@@ -96,7 +96,7 @@ def test_json_matches_the_table(quick):
 def test_gestures_table(tmp_path):
     # `--gestures`: pulling beyond reach, letting go, flicking, in the page, for both solvers.
     pytest.importorskip('playwright.sync_api')
-    proc = subprocess.run([sys.executable, '-m', 'cloth.bench', '--gestures', '--out',
+    proc = subprocess.run([sys.executable, '-m', 'bench', '--gestures', '--out',
                            str(tmp_path)], cwd=ROOT, capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr[-3000:]
     md = (tmp_path / 'gestures.md').read_text()
@@ -125,7 +125,7 @@ def test_figures_table(tmp_path):
     # projection loses it, the carried corner is gentler than one put there at once, a curtain
     # at rest sleeps near where it would have stayed awake).
     pytest.importorskip('playwright.sync_api')
-    proc = subprocess.run([sys.executable, '-m', 'cloth.bench', '--figures', '--quick', '--out',
+    proc = subprocess.run([sys.executable, '-m', 'bench', '--figures', '--quick', '--out',
                            str(tmp_path)], cwd=ROOT, capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stderr[-3000:]
     md = (tmp_path / 'figures-quick.md').read_text()

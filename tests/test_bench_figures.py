@@ -1,8 +1,8 @@
-"""The other-figures benchmark's own arithmetic (cloth/bench_figures.py): the pendulum's
+"""The other-figures benchmark's own arithmetic (bench/figures.py): the pendulum's
 period and energy read from a track, the tethers' excess in the exact hang, and the report."""
 import math
 
-from cloth import bench_figures as bf
+from bench import figures as bf
 from cloth.reference import pendulum_period
 
 
@@ -44,7 +44,7 @@ def test_the_exact_hang_puts_most_vertices_beyond_a_straight_tether():
 
 
 def test_the_report_has_every_table():
-    res = {'meta': {'command': 'python -m cloth.bench --figures', 'date': 'd', 'chromium': 'c',
+    res = {'meta': {'command': 'python -m bench --figures', 'date': 'd', 'chromium': 'c',
                     'cpus': 2, 'seconds': 1.0},
            'sleep': [{'scene': 'curtain', 'n': 10, 'frames': 160, 'cap': 1800, 'swing': 3e-4,
                       'jump': 1e-5, 'extent': 2.0, 'awake_gap': 1e-5},

@@ -1,8 +1,8 @@
-"""The physics benchmark's own arithmetic (cloth/bench_physics.py): strains of a grid, the
+"""The physics benchmark's own arithmetic (bench/physics.py): strains of a grid, the
 field sampled at the same points of the cloth on another grid, the plot."""
 import math
 
-from cloth import bench_physics as bp
+from bench import physics as bp
 
 
 def grid(cols, rows, stretch):

@@ -1,5 +1,5 @@
-// The measuring code shared by the page's compare mode and the benchmark (cloth/bench.py
-// drives it in Chromium): what the page shows and what the benchmark reports are timed and
+// The measuring code shared by the page's compare mode and the benchmark (bench/ drives
+// it in Chromium): what the page shows and what the benchmark reports are timed and
 // measured by these same functions.
 //
 // A run is {cloth, ops, next, frame, ms, proj}: a cloth, its operations (clothCore.ops),

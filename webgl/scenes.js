@@ -108,7 +108,7 @@ window.clothScenes = (function () {
     // structural edges carries the whole weight in its top row (no shear stiffness spreads it
     // into the rows below), whose strain then grows as the grid refines and whose line solves
     // keep a limit cycle (the README's "Known limits", measured by the strain table of
-    // `python -m cloth.bench --physics`).
+    // `python -m bench --physics`).
     corners: {
       label: 'Two corners',
       params: { cols: 30, rows: 30, material: 'inextensible' },
@@ -117,7 +117,7 @@ window.clothScenes = (function () {
       // Slack: the right corner is carried in to 80% of the width over the first second (a
       // smooth start and stop) and pinned there, so the cloth hangs with its top row sagging
       // (the scene where shape shows). Carried, not put there at frame 0: a corner moved there
-      // in one frame flings the cloth (`python -m cloth.bench --figures`, the corner table).
+      // in one frame flings the cloth (`python -m bench --figures`, the corner table).
       actions: function (cols, rows, spacing) {
         if (cols < 2) return [];
         const k = cols - 1, x0 = (cols - 1) * spacing, x1 = 0.8 * x0, frames = CARRY_FRAMES;

@@ -1,7 +1,7 @@
 """Issue #21 in the page: the Material menu (recorded as a `set`, replayed by the CLI), strain
 colours that are the material's field at rest, and a release that flings nothing, through
 real pointer input. The core's side: tests/test_release.py and tests/test_physics.py; the
-presets and sizes of the benchmark: `python -m cloth.bench --physics`."""
+presets and sizes of the benchmark: `python -m bench --physics`."""
 import json
 import math
 import subprocess

@@ -1,5 +1,5 @@
-"""python -m cloth.bench --physics [--quick]: what a person sees, measured on the page's own
-presets (issue #21). CPython only, like cloth/bench.py, whose page it drives: every frame runs
+"""python -m bench --physics [--quick]: what a person sees, measured on the page's own
+presets (issue #21). CPython only, like bench/speed.py, on the page bench/page.py opens: every frame runs
 in Chromium in dist/index.html, the presets made by the page's webgl/scenes.js.
 
 - Release table: on every preset, at grid sizes from 10x10 to 200x200, in the presets' material
@@ -291,7 +291,7 @@ def run(quick, progress, open_page):
         finally:
             browser.close()
     import os
-    meta = {'command': 'python -m cloth.bench --physics' + (' --quick' if quick else ''),
+    meta = {'command': 'python -m bench --physics' + (' --quick' if quick else ''),
             'date': time.strftime('%Y-%m-%d %H:%M:%S %Z'), 'chromium': chromium,
             'cpus': os.cpu_count() or 0, 'seconds': time.time() - t0}
     result = {'meta': meta, 'release': release, 'fields': fields}

@@ -1,4 +1,4 @@
-"""python -m cloth.bench --figures: the README's figures that the speed and physics tables do
+"""python -m bench --figures: the README's figures that the speed and physics tables do
 not print, each measured on the page's presets (or, for the pendulum, at several lengths) and
 at several sizes, in Chromium on dist/index.html like the other tables (CPython only).
 
@@ -18,7 +18,7 @@ import math
 import os
 import time
 
-from cloth.bench_physics import edge_strains
+from bench.physics import edge_strains
 from cloth.reference import pendulum_period, slack_hang
 from cloth.scene import Scene
 
@@ -265,7 +265,7 @@ def tether_table(quick):
 def draw_table(browser, progress):
     """Each scene in a tab of its own, the app running as a person sees it (open_page's tab
     has its loop stopped)."""
-    from cloth.bench import HARNESS, page_of
+    from bench.page import HARNESS, page_of
     rows = []
     for name, n in DRAW:
         page = page_of(browser, [])
@@ -401,7 +401,7 @@ def run(quick, progress, open_page):
             res['draw'] = draw_table(browser, progress) if not quick else []
         finally:
             browser.close()
-    res['meta'] = {'command': 'python -m cloth.bench --figures' + (' --quick' if quick else ''),
+    res['meta'] = {'command': 'python -m bench --figures' + (' --quick' if quick else ''),
                    'date': time.strftime('%Y-%m-%d %H:%M:%S %Z'), 'chromium': chromium,
                    'cpus': os.cpu_count() or 0, 'seconds': time.time() - t0}
     return markdown(res), res
