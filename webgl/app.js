@@ -39,10 +39,10 @@
   const own = window.clothOptions.own;
 
   // A panel: {cloth, run (measure.js: ops, script index, batch timing), draw (its renderer
-  // panel), simMs, clamped}. s.cloth is the first panel's: the one the readouts, the
-  // recording's checks and state() describe. s.base is a cloth that follows the scene's
+  // panel), simMs, clamped}. state.cloth is the first panel's: the one the readouts, the
+  // recording's checks and state() describe. state.base is a cloth that follows the scene's
   // settings without the panels' own (never stepped): what the settings panel shows.
-  const s = {
+  const state = {
     panels: [], cloth: null, base: null, sceneText: '', sceneObj: null, view: null,
     preset: 'curtain', params: null, compare: [],
     mode: 'strain', scaleMode: 'auto', fullScale: 0.05,
@@ -57,6 +57,9 @@
     // that one displacement from where its own vertex was.
     hands: {},
     rects: [],          // the panels' rectangles in the canvas, CSS px
+    baseNext: 0,        // the index of state.base's next scripted action (core.applyDue)
+    trail: false,       // the blade's trail is fading out: keep drawing it
+    linkPending: false, // a link is being copied (the clipboard answers later)
   };
   const recorder = window.clothRecorder.create();
   const share = window.clothShare;
@@ -64,27 +67,27 @@
   let bladeOn = false;      // the Cut tool (touch and pen cut with it; a mouse with Alt too)
 
   const ui = window.clothUI.create({
-    pause: function () { setPaused(!s.paused); },
+    pause: function () { setPaused(!state.paused); },
     step: function () { setPaused(true); advance(1); sampleCharts(true); },
     reset: function () { reset(); },
     preset: function (name) { usePreset(name); },
     solver: function (name) { setSolver(name); },
     material: function (name) { setMaterial(name); },
     param: function (key, raw) { setParam(key, raw); },
-    mode: function (m) { setColorMode(m || (s.mode === 'strain' ? 'stress' : 'strain')); },
-    scaleMode: function (m) { setScaleMode(m || (s.scaleMode === 'auto' ? 'fixed' : 'auto')); },
+    mode: function (m) { setColorMode(m || (state.mode === 'strain' ? 'stress' : 'strain')); },
+    scaleMode: function (m) { setScaleMode(m || (state.scaleMode === 'auto' ? 'fixed' : 'auto')); },
     fullScale: function (raw) { setFullScale(raw); },
     loadJson: function (text) {
       let checked;
       try {
         checked = share.fromText(text);       // decoded as a file of the same bytes; size-checked
       } catch (e) {
-        ui.error('Scene not loaded: ' + e.message + (s.cloth ? ' (the previous scene keeps running)' : ''));
+        ui.error('Scene not loaded: ' + e.message + (state.cloth ? ' (the previous scene keeps running)' : ''));
         throw e;
       }
       loadScene(checked);
     },
-    currentJson: function () { return JSON.stringify(s.sceneObj, null, 1); },
+    currentJson: function () { return JSON.stringify(state.sceneObj, null, 1); },
     replay: function () { replay(); },
     exportFile: function () { exportRecording(); },
     copyLink: function () { copyLink(); },
@@ -104,8 +107,8 @@
     onLost: function () { ui.error('The WebGL context was lost; waiting for the browser to restore it.'); },
     onRestored: function () {
       if (ui.errorText().indexOf('WebGL context was lost') >= 0) ui.clearError();
-      s.panels.forEach(function (p) { p.draw.setScene(p.cloth); });
-      s.dirty = true;
+      state.panels.forEach(function (p) { p.draw.setScene(p.cloth); });
+      state.dirty = true;
     },
     onError: function (msg) { ui.fatal(msg); },
   });
@@ -164,58 +167,58 @@
       }
     } catch (e) {
       const msg = e && e.message ? e.message : String(e);
-      ui.error('Scene not loaded: ' + msg + (s.cloth ? ' (the previous scene keeps running)' : ''));
+      ui.error('Scene not loaded: ' + msg + (state.cloth ? ' (the previous scene keeps running)' : ''));
       throw new Error(msg);
     }
     ui.clearError();
     input.releaseAll(holds || []);
-    s.compare = Array.isArray(obj.compare) ? obj.compare.map(function (o) { return Object.assign({}, o); }) : [];
-    s.panels = cloths.map(function (cloth, i) {
+    state.compare = Array.isArray(obj.compare) ? obj.compare.map(function (o) { return Object.assign({}, o); }) : [];
+    state.panels = cloths.map(function (cloth, i) {
       return { cloth: cloth, run: null, draw: renderer.ok ? renderer.panel(i) : null,
                simMs: NaN, clamped: 0 };
     });
-    s.cloth = cloths[0];
-    s.base = base;
-    s.baseNext = 0;
-    s.pinEdits = {};
-    s.hands = {};
-    s.sceneText = text;
-    s.sceneObj = obj;
-    s.preset = preset;
-    s.view = view || scenes.viewFor(obj);
-    s.frames = 0;
-    s.acc = 0;
-    recorder.start(obj, window.clothRecorder.scriptOf(s.cloth), s.cloth.n_verts);
-    s.replayEnd = typeof obj.frames === 'number' ? obj.frames : -1;
-    s.replayEnded = false;
+    state.cloth = cloths[0];
+    state.base = base;
+    state.baseNext = 0;
+    state.pinEdits = {};
+    state.hands = {};
+    state.sceneText = text;
+    state.sceneObj = obj;
+    state.preset = preset;
+    state.view = view || scenes.viewFor(obj);
+    state.frames = 0;
+    state.acc = 0;
+    recorder.start(obj, window.clothRecorder.scriptOf(state.cloth), state.cloth.n_verts);
+    state.replayEnd = typeof obj.frames === 'number' ? obj.frames : -1;
+    state.replayEnded = false;
     // The scene's own actions of frame 0 come before any frame (measure.run applies them).
-    s.panels.forEach(function (p) { p.run = measure.run(p.cloth); });
-    scripted(0, s.panels[0].run.next);
-    s.wanted = 0; s.played = 0; s.speed = 1;
-    charts.reset(s.panels.length);
-    compareUI.render(s.compare);
+    state.panels.forEach(function (p) { p.run = measure.run(p.cloth); });
+    scripted(0, state.panels[0].run.next);
+    state.wanted = 0; state.played = 0; state.speed = 1;
+    charts.reset(state.panels.length);
+    compareUI.render(state.compare);
     if (renderer.ok) {
-      s.panels.forEach(function (p) { p.draw.setScene(p.cloth); p.draw.setView(s.view); });
+      state.panels.forEach(function (p) { p.draw.setScene(p.cloth); p.draw.setView(state.view); });
       layout();
     }
     // The pointers that kept a vertex hold it again, where it now is, keeping on with their
     // pointer from here (recorded as grabs, at frame 0 of the new recording).
     input.regrab();
-    s.panels.forEach(function (p) { p.cloth.measure(); });
-    s.needMeasure = false;
-    s.dirty = true;
+    state.panels.forEach(function (p) { p.cloth.measure(); });
+    state.needMeasure = false;
+    state.dirty = true;
     ui.setPreset(preset);
-    ui.setSolver(s.params.solver);
-    ui.setParams(s.params);
+    ui.setSolver(state.params.solver);
+    ui.setParams(state.params);
     if (renderer.ok && !renderer.lost) render();
-    const work = scenes.workOf(obj) * Math.max(1, s.compare.length);
+    const work = scenes.workOf(obj) * Math.max(1, state.compare.length);
     if (work > scenes.REAL_TIME_WORK) {
       ui.note('This scene needs about ' + work.toExponential(1) + ' edge updates a frame: ' +
               'expect slow motion on an ordinary machine');
     }
-    if (s.replayEnd === 0) endReplay();
-    else if (s.replayEnd > 0) setPaused(false);
-    return s.cloth;
+    if (state.replayEnd === 0) endReplay();
+    else if (state.replayEnd > 0) setPaused(false);
+    return state.cloth;
   }
 
   // After the scene's own actions [from, to) of the first panel were applied (every panel has
@@ -223,25 +226,25 @@
   // script moves it now, and the pointer's release must not let go of the script's hold); a
   // scripted set changes what the settings panel shows; the base cloth follows the script.
   function scripted(from, to) {
-    const actions = s.cloth.scene.actions;
-    if (s.base !== s.cloth) s.baseNext = core.applyDue(s.base, s.baseNext, s.frames);
+    const actions = state.cloth.scene.actions;
+    if (state.base !== state.cloth) state.baseNext = core.applyDue(state.base, state.baseNext, state.frames);
     for (let i = from; i < to; i++) {
       if (actions[i].op === 'grab') input.forget(actions[i].vertex);
     }
-    s.params = paramsOf(s.base);
+    state.params = paramsOf(state.base);
     if (to > from) {
-      ui.setParams(s.params);
-      ui.setSolver(s.params.solver);
-      s.needMeasure = true;
-      s.dirty = true;
+      ui.setParams(state.params);
+      ui.setSolver(state.params.solver);
+      state.needMeasure = true;
+      state.dirty = true;
     }
   }
 
   // ---- replay, recording, sharing ---------------------------------------------
 
   function endReplay() {
-    s.replayEnd = -1;
-    s.replayEnded = true;
+    state.replayEnd = -1;
+    state.replayEnded = true;
     setPaused(true);
   }
 
@@ -249,37 +252,37 @@
   // script's holds are let go, and the recording goes on from here; a replay that ended
   // starts running again.
   function takeOver() {
-    if (s.replayEnd >= 0) {
-      s.replayEnd = -1;
-      s.panels.forEach(function (p) { core.dropActionsAfter(p.cloth, s.frames); });
-      if (s.base !== s.cloth) core.dropActionsAfter(s.base, s.frames);
-      recorder.truncate(s.frames);
-      const c = s.cloth;
+    if (state.replayEnd >= 0) {
+      state.replayEnd = -1;
+      state.panels.forEach(function (p) { core.dropActionsAfter(p.cloth, state.frames); });
+      if (state.base !== state.cloth) core.dropActionsAfter(state.base, state.frames);
+      recorder.truncate(state.frames);
+      const c = state.cloth;
       for (let k = 0; k < c.n_verts; k++) {
         if (c.held[k] !== 0 && !input.holds(k)) {
-          s.panels.forEach(function (p) { p.run.ops.release(k); });
-          recorder.release(s.frames, k);
+          state.panels.forEach(function (p) { p.run.ops.release(k); });
+          recorder.release(state.frames, k);
         }
       }
-      s.dirty = true;
+      state.dirty = true;
     }
-    if (s.replayEnded) { s.replayEnded = false; setPaused(false); }
+    if (state.replayEnded) { state.replayEnded = false; setPaused(false); }
   }
 
   function recordingText() {
-    return JSON.stringify(recorder.scene(recorder.complete(s.frames)));
+    return JSON.stringify(recorder.scene(recorder.complete(state.frames)));
   }
 
   function recordingName() {
-    return 'cloth-' + (s.preset || 'scene') + (s.compare.length ? '-compare' : '') + '-' +
-      recorder.complete(s.frames) + 'f.json';
+    return 'cloth-' + (state.preset || 'scene') + (state.compare.length ? '-compare' : '') + '-' +
+      recorder.complete(state.frames) + 'f.json';
   }
 
   // Restart the recording from frame 0 at real speed.
   function replay() {
     const text = recordingText();
-    load(text, s.preset === 'custom' ? 'custom' : s.preset, s.view);
-    ui.note('Replaying ' + s.replayEnd + ' frames; a gesture takes over');
+    load(text, state.preset === 'custom' ? 'custom' : state.preset, state.view);
+    ui.note('Replaying ' + state.replayEnd + ' frames; a gesture takes over');
   }
 
   function exportRecording() {
@@ -335,13 +338,13 @@
   // A preset keeps compare mode: the same panels run the new scene.
   function usePreset(name, params) {
     const made = scenes.make(name, params || scenes.defaults(name));
-    if (s.compare.length) made.scene.compare = s.compare;
+    if (state.compare.length) made.scene.compare = state.compare;
     ui.note('');
     return load(JSON.stringify(made.scene), name, made.view);
   }
 
   function reset() {
-    return load(s.sceneText, s.preset, s.view);
+    return load(state.sceneText, state.preset, state.view);
   }
 
   function loadScene(text) {
@@ -354,13 +357,13 @@
   // list, from frame 0 and a new recording; [] leaves compare mode.
   function setCompare(list, note) {
     if (!Array.isArray(list)) throw new Error('compare needs an array of objects of scene keys');
-    const obj = Object.assign({}, s.sceneObj);
+    const obj = Object.assign({}, state.sceneObj);
     delete obj.frames;
     if (list.length) obj.compare = list; else delete obj.compare;
     try {
-      load(JSON.stringify(obj), s.preset, s.view);
+      load(JSON.stringify(obj), state.preset, state.view);
     } catch (e) {
-      compareUI.render(s.compare);   // the banner says why; the old panels run on
+      compareUI.render(state.compare);   // the banner says why; the old panels run on
       return false;
     }
     ui.note(note || (list.length ? 'Comparing ' + list.length + ' panels under the same hands, from frame 0' : ''));
@@ -385,8 +388,8 @@
 
   function setParam(key, raw) {
     const c = scenes.clamp(key, raw);
-    if (c.value === null) { ui.note(c.note); ui.setParams(s.params); return; }
-    const p = Object.assign({}, s.params);
+    if (c.value === null) { ui.note(c.note); ui.setParams(state.params); return; }
+    const p = Object.assign({}, state.params);
     p[key] = c.value;
     if (own(GRID_KEYS, key)) regrid(p, c.note);
     else retune(p, c.note);
@@ -396,14 +399,14 @@
   function setSolver(name) {
     const d = own(scenes.SOLVERS, name) ? scenes.SOLVERS[name] : null;
     if (!d) throw new Error('unknown solver: ' + name);
-    retune(Object.assign({}, s.params, { solver: name, substeps: d.substeps, iterations: d.iterations }), '');
+    retune(Object.assign({}, state.params, { solver: name, substeps: d.substeps, iterations: d.iterations }), '');
   }
 
   // A named fabric: its density and stiffness, set like every setting (recorded as a `set` of
   // density and compliance).
   function setMaterial(name) {
-    if (!own(scenes.MATERIALS, name)) { ui.setParams(s.params); return; }
-    retune(Object.assign({}, s.params, { material: name }), '');
+    if (!own(scenes.MATERIALS, name)) { ui.setParams(state.params); return; }
+    retune(Object.assign({}, state.params, { material: name }), '');
   }
 
   // The scene with the settings of p (those the panel shows) written into it.
@@ -427,73 +430,73 @@
   // as the recording's `set` sets them; a rejected one leaves everything as it was.
   function retune(p, note) {
     const keys = {};
-    if (p.iterations !== s.params.iterations) keys.iterations = p.iterations;
-    if (p.substeps !== s.params.substeps) keys.substeps = p.substeps;
-    if (p.solver !== s.params.solver) keys.solver = p.solver;
-    if (p.damping !== s.params.damping) keys.damping = p.damping;
-    if (p.gravity !== s.params.gravity) keys.gravity = [s.base.scene.gravity_x, p.gravity];
-    if (p.tear !== s.params.tear) keys.tear = p.tear > 0 ? p.tear : null;
-    if (p.material !== s.params.material && own(scenes.MATERIALS, p.material)) {
+    if (p.iterations !== state.params.iterations) keys.iterations = p.iterations;
+    if (p.substeps !== state.params.substeps) keys.substeps = p.substeps;
+    if (p.solver !== state.params.solver) keys.solver = p.solver;
+    if (p.damping !== state.params.damping) keys.damping = p.damping;
+    if (p.gravity !== state.params.gravity) keys.gravity = [state.base.scene.gravity_x, p.gravity];
+    if (p.tear !== state.params.tear) keys.tear = p.tear > 0 ? p.tear : null;
+    if (p.material !== state.params.material && own(scenes.MATERIALS, p.material)) {
       keys.density = scenes.MATERIALS[p.material].density;
       keys.compliance = scenes.MATERIALS[p.material].compliance;
     }
-    const obj = withSettings(s.sceneObj, p);
+    const obj = withSettings(state.sceneObj, p);
     try {
       const limit = limitOf(obj);
       if (limit) throw new Error(limit);
       if (Object.keys(keys).length) {
         takeOver();
         const text = JSON.stringify(keys);
-        if (s.base !== s.cloth) core.setSettings(s.base, text);
-        s.panels.forEach(function (panel) { core.setSettings(panel.cloth, text); });
-        recorder.set(s.frames, keys);
+        if (state.base !== state.cloth) core.setSettings(state.base, text);
+        state.panels.forEach(function (panel) { core.setSettings(panel.cloth, text); });
+        recorder.set(state.frames, keys);
       }
     } catch (e) {
       ui.error('Setting not applied: ' + e.message + ' (the cloth runs on as it was)');
-      ui.setParams(s.params);
-      ui.setSolver(s.params.solver);
+      ui.setParams(state.params);
+      ui.setSolver(state.params.solver);
       return;
     }
-    s.sceneObj = obj;
-    s.sceneText = JSON.stringify(obj);   // Reset restarts with the new settings
-    s.params = paramsOf(s.base);
-    ui.setParams(s.params);
-    ui.setSolver(s.params.solver);
+    state.sceneObj = obj;
+    state.sceneText = JSON.stringify(obj);   // Reset restarts with the new settings
+    state.params = paramsOf(state.base);
+    ui.setParams(state.params);
+    ui.setSolver(state.params.solver);
     ui.note(note);
-    s.dirty = true;
+    state.dirty = true;
   }
 
   // A new grid. Pins keep their meaning, row and column: the preset's pins for the new size
   // (a custom scene's own pins and scripted actions, moved to the same row and column), with
-  // the pins a person set or removed (s.pinEdits, kept over any number of grid changes)
+  // the pins a person set or removed (state.pinEdits, kept over any number of grid changes)
   // written over them, and the vertices a hand holds held again. What falls outside the new
   // grid is dropped, and the note says so.
   function regrid(p, note) {
-    const oldCols = s.cloth.cols;
+    const oldCols = state.cloth.cols;
     function moved(k) {
       const r = Math.floor(k / oldCols), c = k - r * oldCols;
       return r < p.rows && c < p.cols ? r * p.cols + c : -1;
     }
     function place(k) { return 'row ' + Math.floor(k / oldCols) + ' column ' + (k % oldCols); }
     const dropped = [];
-    let obj, view, preset = s.preset;
+    let obj, view, preset = state.preset;
     if (preset !== 'custom') {
       const made = scenes.make(preset, p);
       obj = made.scene; view = made.view;
-      if (s.compare.length) obj.compare = s.compare;
+      if (state.compare.length) obj.compare = state.compare;
     } else {
-      obj = withSettings(s.sceneObj, p);
+      obj = withSettings(state.sceneObj, p);
       obj.cols = p.cols; obj.rows = p.rows;
       delete obj.frames;      // a new grid is a new scene, not the recording it came from
       obj.pins = [];
-      s.cloth.scene.pins.forEach(function (k) {
+      state.cloth.scene.pins.forEach(function (k) {
         const m = moved(k);
         if (m >= 0) obj.pins.push(m); else dropped.push('pin at ' + place(k));
       });
-      if (Array.isArray(s.sceneObj.actions)) {
+      if (Array.isArray(state.sceneObj.actions)) {
         let lost = 0;
         obj.actions = [];
-        s.sceneObj.actions.forEach(function (a) {
+        state.sceneObj.actions.forEach(function (a) {
           // a set has no vertex, and a cut is a blade in the world: both stay as they are
           if (a.op === 'set' || a.op === 'cut') { obj.actions.push(a); return; }
           const m = moved(a.vertex);
@@ -506,8 +509,8 @@
     const pins = {};
     obj.pins.forEach(function (k) { pins[k] = true; });
     const edits = {};
-    Object.keys(s.pinEdits).forEach(function (key) {
-      const k = Number(key), m = moved(k), pinned = s.pinEdits[key];
+    Object.keys(state.pinEdits).forEach(function (key) {
+      const k = Number(key), m = moved(k), pinned = state.pinEdits[key];
       if (m < 0) { if (pinned) dropped.push('your pin at ' + place(k)); return; }
       edits[m] = pinned;
       if (pinned) pins[m] = true; else delete pins[m];
@@ -518,10 +521,10 @@
     try {
       load(text, preset, view, holds);
     } catch (e) {
-      ui.setParams(s.params);  // the banner shows why; the old scene runs on
+      ui.setParams(state.params);  // the banner shows why; the old scene runs on
       return;
     }
-    s.pinEdits = edits;
+    state.pinEdits = edits;
     holds.forEach(function (h) { if (h.k < 0) dropped.push('the held vertex at ' + place(h.was)); });
     const notes = [];
     if (note) notes.push(note);
@@ -537,24 +540,24 @@
 
   function setColorMode(mode) {
     if (mode !== 'strain' && mode !== 'stress') throw new Error("colour mode must be 'strain' or 'stress'");
-    s.mode = mode;
+    state.mode = mode;
     ui.setMode(mode);
-    s.dirty = true;
+    state.dirty = true;
   }
 
   function setScaleMode(mode) {
     if (mode !== 'auto' && mode !== 'fixed') throw new Error("scale must be 'auto' or 'fixed'");
-    s.scaleMode = mode;
-    ui.setScale(s.scaleMode, s.fullScale);
-    s.dirty = true;
+    state.scaleMode = mode;
+    ui.setScale(state.scaleMode, state.fullScale);
+    state.dirty = true;
   }
 
   function setFullScale(raw) {
     const c = scenes.clamp('fullScale', raw);
     ui.note(c.note);
-    if (c.value !== null) s.fullScale = c.value;
-    ui.setScale(s.scaleMode, s.fullScale);
-    s.dirty = true;
+    if (c.value !== null) state.fullScale = c.value;
+    ui.setScale(state.scaleMode, state.fullScale);
+    state.dirty = true;
   }
 
   // Auto is the seed's normalisation by the frame's maximum, above a floor: solver noise on an
@@ -567,24 +570,24 @@
 
   function frameMax() {
     let top = 0;
-    for (let i = 0; i < s.panels.length; i++) {
-      const c = s.panels[i].cloth;
-      const v = s.mode === 'stress' ? c.max_stress : c.max_diff;
+    for (let i = 0; i < state.panels.length; i++) {
+      const c = state.panels[i].cloth;
+      const v = state.mode === 'stress' ? c.max_stress : c.max_diff;
       if (v > top) top = v;
     }
     return top;
   }
 
   function currentScale() {
-    if (s.scaleMode === 'fixed') return s.fullScale;
+    if (state.scaleMode === 'fixed') return state.fullScale;
     return Math.max(frameMax(), AUTO_FLOOR);
   }
 
   // ---- stepping and drawing -------------------------------------------------
 
   function allAsleep() {
-    for (let i = 0; i < s.panels.length; i++) {
-      const p = s.panels[i];
+    for (let i = 0; i < state.panels.length; i++) {
+      const p = state.panels[i];
       if (!p.cloth.asleep || p.run.next < p.cloth.scene.actions.length) return false;
     }
     return true;
@@ -594,24 +597,24 @@
   // one frame runs; the first panel decides how many, and the others run as many); a replay
   // stops at its last frame. Returns the frames run.
   function simulate(n, budgetMs) {
-    if (s.replayEnd >= 0) n = Math.min(n, s.replayEnd - s.frames);
+    if (state.replayEnd >= 0) n = Math.min(n, state.replayEnd - state.frames);
     if (n <= 0) { atReplayEnd(); return 0; }
     if (allAsleep()) {
       // At rest (the core stopped stepping them): nothing to step, measure or draw until an
       // operation wakes them.
-      s.frames += n;
-      s.panels.forEach(function (p) { p.run.frame += n; p.simMs = NaN; });
+      state.frames += n;
+      state.panels.forEach(function (p) { p.run.frame += n; p.simMs = NaN; });
       atReplayEnd();
       return n;
     }
-    const first = s.panels[0].run, from = first.next;
-    const share_ = s.panels.length > 1 ? budgetMs / s.panels.length : budgetMs;
+    const first = state.panels[0].run, from = first.next;
+    const share_ = state.panels.length > 1 ? budgetMs / state.panels.length : budgetMs;
     const done = measure.step(first, n, budgetMs > 0 ? share_ : 0);
-    for (let i = 1; i < s.panels.length; i++) measure.step(s.panels[i].run, done, 0);
-    s.frames += done;
+    for (let i = 1; i < state.panels.length; i++) measure.step(state.panels[i].run, done, 0);
+    state.frames += done;
     scripted(from, first.next);
-    for (let i = 0; i < s.panels.length; i++) {
-      const p = s.panels[i];
+    for (let i = 0; i < state.panels.length; i++) {
+      const p = state.panels[i];
       p.cloth.measure();
       const ms = p.cloth.asleep ? NaN : p.run.ms / done;
       p.simMs = Number.isFinite(p.simMs) && Number.isFinite(ms) ? p.simMs + EMA * (ms - p.simMs) : ms;
@@ -620,11 +623,11 @@
       // or settings that pump energy (one sweep per step on an undamped grid).
       if (p.cloth.clamped > p.clamped) {
         p.clamped = p.cloth.clamped;
-        ui.note((s.panels.length > 1 ? 'Panel ' + (i + 1) + ': ' : '') + cappedNote(p.cloth));
+        ui.note((state.panels.length > 1 ? 'Panel ' + (i + 1) + ': ' : '') + cappedNote(p.cloth));
       }
     }
-    s.needMeasure = false;
-    s.dirty = true;
+    state.needMeasure = false;
+    state.dirty = true;
     atReplayEnd();
     return done;
   }
@@ -640,7 +643,7 @@
   }
 
   function atReplayEnd() {
-    if (s.replayEnd >= 0 && s.frames >= s.replayEnd) endReplay();
+    if (state.replayEnd >= 0 && state.frames >= state.replayEnd) endReplay();
   }
 
   // The overlays' boxes in client pixels (left, top, right, bottom each), measured on a
@@ -664,8 +667,8 @@
       let under = false;
       if (dragging) {
         const pad = 24;   // a finger's width around the vertex
-        for (let j = 0; j < s.panels.length && !under; j++) {
-          const c = s.panels[j].cloth, d = s.panels[j].draw;
+        for (let j = 0; j < state.panels.length && !under; j++) {
+          const c = state.panels[j].cloth, d = state.panels[j].draw;
           // the held vertex, and its hand (the pointer), which a hand of finite strength's
           // vertex may lag behind or stop short of
           for (let k = 0; k < c.n_verts && !under; k++) {
@@ -690,17 +693,17 @@
   }
 
   function render() {
-    if (!s.cloth || !renderer.ok || renderer.lost) return;
+    if (!state.cloth || !renderer.ok || renderer.lost) return;
     fadeOverlays();
-    if (s.needMeasure) { s.panels.forEach(function (p) { p.cloth.measure(); }); s.needMeasure = false; }
+    if (state.needMeasure) { state.panels.forEach(function (p) { p.cloth.measure(); }); state.needMeasure = false; }
     const t0 = performance.now();
-    s.scale = currentScale();
+    state.scale = currentScale();
     renderer.begin();
-    for (let i = 0; i < s.panels.length; i++) s.panels[i].draw.draw(s.panels[i].cloth, s.mode, s.scale);
+    for (let i = 0; i < state.panels.length; i++) state.panels[i].draw.draw(state.panels[i].cloth, state.mode, state.scale);
     const ms = performance.now() - t0;
-    s.renderMs = Number.isFinite(s.renderMs) ? s.renderMs + EMA * (ms - s.renderMs) : ms;
-    s.dirty = false;
-    s.renders++;
+    state.renderMs = Number.isFinite(state.renderMs) ? state.renderMs + EMA * (ms - state.renderMs) : ms;
+    state.dirty = false;
+    state.renders++;
   }
 
   // Test seam: run `frames` frames now and draw them (with `undrawn`, leave the drawing to
@@ -710,44 +713,44 @@
     const n = Math.max(0, Math.floor(Number(frames) || 0));
     if (n > 0) simulate(n);
     if (!undrawn) render();
-    return s.frames;
+    return state.frames;
   }
 
   function setPaused(paused) {
-    s.paused = !!paused;
-    s.acc = 0;
-    ui.setPaused(s.paused);
+    state.paused = !!paused;
+    state.acc = 0;
+    ui.setPaused(state.paused);
   }
 
   function fmt(v) { return window.clothUI.fmt(v, 4); }
 
   function readouts(now) {
-    if (now - s.lastReadout < READOUT_MS || !s.cloth) return;
-    s.lastReadout = now;
+    if (now - state.lastReadout < READOUT_MS || !state.cloth) return;
+    state.lastReadout = now;
     measureOverlays();
     measureCanvas();
-    const c = s.cloth;
-    if (s.wanted > 0) s.speed = s.played / s.wanted;
-    s.wanted = 0; s.played = 0;
-    const slow = !s.paused && s.speed < SLOW_MOTION;
+    const c = state.cloth;
+    if (state.wanted > 0) state.speed = state.played / state.wanted;
+    state.wanted = 0; state.played = 0;
+    const slow = !state.paused && state.speed < SLOW_MOTION;
     let simMs = 0;
-    s.panels.forEach(function (p) { if (Number.isFinite(p.simMs)) simMs += p.simMs; });
+    state.panels.forEach(function (p) { if (Number.isFinite(p.simMs)) simMs += p.simMs; });
     ui.setReadouts({
-      simMs: allAsleep() ? NaN : simMs, renderMs: s.renderMs, fps: s.fps, rms: c.rms_strain, max: c.max_strain,
+      simMs: allAsleep() ? NaN : simMs, renderMs: state.renderMs, fps: state.fps, rms: c.rms_strain, max: c.max_strain,
       size: c.cols + '×' + c.rows + ' · ' + c.n_edges + (c.n_edges === 1 ? ' edge' : ' edges') +
         (c.broken > 0 ? ' left of ' + (c.n_edges + c.broken) : '') +
-        (s.panels.length > 1 ? ' · ' + s.panels.length + ' panels' : '') + (allAsleep() ? ' · at rest' : '') +
-        (slow ? ' · slow motion ×' + s.speed.toFixed(2) : ''),
+        (state.panels.length > 1 ? ' · ' + state.panels.length + ' panels' : '') + (allAsleep() ? ' · at rest' : '') +
+        (slow ? ' · slow motion ×' + state.speed.toFixed(2) : ''),
     });
-    ui.setLegend(s.scale, s.scaleMode === 'fixed' ? 'fixed' : (frameMax() > AUTO_FLOOR ? 'max' : 'floor'));
-    ui.setRecording({ frames: s.frames, actions: recorder.count(), full: recorder.full(),
-                      complete: recorder.complete(s.frames), replayEnd: s.replayEnd });
-    if (s.panels.length > 1) {
-      s.panels.forEach(function (p, i) {
+    ui.setLegend(state.scale, state.scaleMode === 'fixed' ? 'fixed' : (frameMax() > AUTO_FLOOR ? 'max' : 'floor'));
+    ui.setRecording({ frames: state.frames, actions: recorder.count(), full: recorder.full(),
+                      complete: recorder.complete(state.frames), replayEnd: state.replayEnd });
+    if (state.panels.length > 1) {
+      state.panels.forEach(function (p, i) {
         // A narrow panel (a phone, four panels) gets the short label: the solver and its
         // steps; the RMS strain and the cost. The numbers come first on their line and are
         // never cut (compare.js).
-        const r = s.rects[i], small = !r || r.w < 340, label = measure.label(p.cloth);
+        const r = state.rects[i], small = !r || r.w < 340, label = measure.label(p.cloth);
         const ms = Number.isFinite(p.simMs) ? p.simMs.toFixed(2) + (small ? ' ms' : ' ms/frame') : 'at rest';
         compareUI.setLabel(i, (i + 1) + ' · ' + (small ? label.split(',')[0] : label),
           small ? 'rms ' + fmt(p.cloth.rms_strain) + ' · ' + ms
@@ -758,8 +761,8 @@
 
   // Charts: a sample of each panel every clothCharts.SAMPLE_MS while the simulation runs, and
   // one for every frame stepped by hand.
-  function panelRms(i) { return s.panels[i].cloth.rms_strain; }
-  function panelMs(i) { return s.panels[i].simMs; }
+  function panelRms(i) { return state.panels[i].cloth.rms_strain; }
+  function panelMs(i) { return state.panels[i].simMs; }
   function sampleCharts(every) {
     if (charts.sample(performance.now(), panelRms, panelMs, every) && !document.getElementById('charts').hidden) charts.draw();
   }
@@ -767,25 +770,25 @@
   function tick(nowMs) {
     window.requestAnimationFrame(tick);
     const now = nowMs / 1000;
-    let gap = s.last < 0 ? 0 : now - s.last;
-    s.last = now;
-    if (gap > 0) s.fps = Number.isFinite(s.fps) ? s.fps + EMA * (1 / gap - s.fps) : 1 / gap;
+    let gap = state.last < 0 ? 0 : now - state.last;
+    state.last = now;
+    if (gap > 0) state.fps = Number.isFinite(state.fps) ? state.fps + EMA * (1 / gap - state.fps) : 1 / gap;
     if (gap > MAX_GAP) gap = MAX_GAP;
     try {
-      if (!s.paused && s.cloth) {
-        const dt = s.cloth.dt;
-        s.acc += gap;
-        const due = Math.min(Math.floor(s.acc / dt), MAX_CATCHUP);
+      if (!state.paused && state.cloth) {
+        const dt = state.cloth.dt;
+        state.acc += gap;
+        const due = Math.min(Math.floor(state.acc / dt), MAX_CATCHUP);
         const done = due > 0 ? simulate(due, FRAME_BUDGET_MS) : 0;
         // What the budget or the catch-up cap left undone is dropped, not owed: a slow scene
         // runs in slow motion (the readout says so) and input is handled every frame.
-        s.acc = done < due || Math.floor(s.acc / dt) > MAX_CATCHUP ? 0 : s.acc - done * dt;
-        s.wanted += gap;
-        s.played += allAsleep() ? gap : done * dt;
+        state.acc = done < due || Math.floor(state.acc / dt) > MAX_CATCHUP ? 0 : state.acc - done * dt;
+        state.wanted += gap;
+        state.played += allAsleep() ? gap : done * dt;
         sampleCharts(false);
       }
-      if (s.dirty) render();
-      if (s.trail) s.trail = blade.draw(performance.now());
+      if (state.dirty) render();
+      if (state.trail) state.trail = blade.draw(performance.now());
     } catch (e) {
       setPaused(true);
       ui.error('Simulation stopped: ' + core.message(e));
@@ -799,19 +802,19 @@
   // of the canvas, its view fitted above the band).
   function layout() {
     if (!renderer.ok) return;
-    const n = s.panels.length, v = s.view, w = renderer.cssWidth, h = renderer.cssHeight - overlayBand();
-    s.rects = n > 1
+    const n = state.panels.length, v = state.view, w = renderer.cssWidth, h = renderer.cssHeight - overlayBand();
+    state.rects = n > 1
       ? window.clothCompare.layout(n, w, h, v.x1 - v.x0, v.y1 - v.y0)
       : [{ x: 0, y: 0, w: w, h: h }];
-    s.panels.forEach(function (p, i) {
-      const r = s.rects[i];
+    state.panels.forEach(function (p, i) {
+      const r = state.rects[i];
       // A panel's cloth is fitted below its label (two lines, compare.js), where there is room.
       const top = n > 1 && r.h > 3 * LABEL_HEIGHT ? LABEL_HEIGHT : 0;
       if (n > 1) p.draw.setRect(r.x, r.y, r.w, r.h);
       else p.draw.setRect();
       p.draw.setFit(r.x, r.y + top, r.w, r.h - top);
     });
-    compareUI.placeLabels(n > 1 ? s.rects : []);
+    compareUI.placeLabels(n > 1 ? state.rects : []);
   }
 
   const LABEL_HEIGHT = 44;    // CSS px: a panel label's two lines, its padding and offset
@@ -830,7 +833,7 @@
 
   // The panel under a point of the canvas (CSS px), or -1.
   function panelAt(cx, cy) {
-    for (let i = 0; i < s.panels.length; i++) if (s.panels[i].draw.contains(cx, cy)) return i;
+    for (let i = 0; i < state.panels.length; i++) if (state.panels[i].draw.contains(cx, cy)) return i;
     return -1;
   }
 
@@ -841,20 +844,20 @@
     locate: function (clientX, clientY) {
       const r = canvas.getBoundingClientRect(), cx = clientX - r.left, cy = clientY - r.top;
       const i = renderer.ok ? panelAt(cx, cy) : -1;
-      const w = i >= 0 ? s.panels[i].draw.toWorld(cx, cy) : [NaN, NaN];
+      const w = i >= 0 ? state.panels[i].draw.toWorld(cx, cy) : [NaN, NaN];
       return { panel: i, x: w[0], y: w[1] };
     },
     toWorld: function (panel, clientX, clientY) {
       const r = canvas.getBoundingClientRect();
-      return s.panels[Math.min(panel, s.panels.length - 1)].draw.toWorld(clientX - r.left, clientY - r.top);
+      return state.panels[Math.min(panel, state.panels.length - 1)].draw.toWorld(clientX - r.left, clientY - r.top);
     },
     pick: function (panel, x, y, radiusCss) {
-      if (!s.cloth || !renderer.ok || panel < 0) return -1;
-      const p = s.panels[panel];
+      if (!state.cloth || !renderer.ok || panel < 0) return -1;
+      const p = state.panels[panel];
       return p.run.ops.nearest(x, y, radiusCss / p.draw.pixelsPerMetre());
     },
     positionOf: function (panel, k) {
-      const pos = s.panels[Math.min(panel, s.panels.length - 1)].cloth.pos;
+      const pos = state.panels[Math.min(panel, state.panels.length - 1)].cloth.pos;
       return [pos[2 * k], pos[2 * k + 1]];
     },
     // One cloth: the hand takes hold at (x, y) and goes where the pointer takes it. Compare
@@ -864,78 +867,78 @@
     // and moves `by`).
     grab: function (k, x, y) {
       takeOver();
-      if (s.panels.length > 1) {
-        for (let i = 0; i < s.panels.length; i++) {
-          const pos = s.panels[i].cloth.pos;
-          s.panels[i].run.ops.grab(k, pos[2 * k], pos[2 * k + 1]);
+      if (state.panels.length > 1) {
+        for (let i = 0; i < state.panels.length; i++) {
+          const pos = state.panels[i].cloth.pos;
+          state.panels[i].run.ops.grab(k, pos[2 * k], pos[2 * k + 1]);
         }
-        s.hands[k] = { x: x, y: y, dx: 0, dy: 0 };
-        recorder.grabHere(s.frames, k);
+        state.hands[k] = { x: x, y: y, dx: 0, dy: 0 };
+        recorder.grabHere(state.frames, k);
       } else {
-        s.panels[0].run.ops.grab(k, x, y);
-        recorder.grab(s.frames, k, x, y);
+        state.panels[0].run.ops.grab(k, x, y);
+        recorder.grab(state.frames, k, x, y);
       }
       touched();
     },
     move: function (k, x, y) {
-      const hand = s.hands[k];
-      if (s.panels.length > 1) {
+      const hand = state.hands[k];
+      if (state.panels.length > 1) {
         if (!hand) return;                      // no hand of this page's holds k
         const dx = x - hand.x, dy = y - hand.y, dx0 = hand.dx, dy0 = hand.dy;
         if (dx === dx0 && dy === dy0) return;   // a hand held still changes nothing
         takeOver();
-        for (let i = 0; i < s.panels.length; i++) s.panels[i].run.ops.move_by(k, dx, dy);
+        for (let i = 0; i < state.panels.length; i++) state.panels[i].run.ops.move_by(k, dx, dy);
         hand.dx = dx; hand.dy = dy;
-        recorder.moveBy(s.frames, k, dx, dy, dx0, dy0);
+        recorder.moveBy(state.frames, k, dx, dy, dx0, dy0);
         touched();
         return;
       }
       // where the hand is (a hand of finite strength's vertex may be short of it)
-      const target = s.cloth.target, x0 = target[2 * k], y0 = target[2 * k + 1];
+      const target = state.cloth.target, x0 = target[2 * k], y0 = target[2 * k + 1];
       if (x === x0 && y === y0) return;       // a hand held still changes nothing
       takeOver();
-      s.panels[0].run.ops.move(k, x, y);
-      recorder.move(s.frames, k, x, y, x0, y0);
+      state.panels[0].run.ops.move(k, x, y);
+      recorder.move(state.frames, k, x, y, x0, y0);
       touched();
     },
     release: function (k) {
-      if (k >= s.cloth.n_verts || s.cloth.held[k] === 0) return;
+      if (k >= state.cloth.n_verts || state.cloth.held[k] === 0) return;
       takeOver();
-      for (let i = 0; i < s.panels.length; i++) s.panels[i].run.ops.release(k);
-      recorder.release(s.frames, k);
+      for (let i = 0; i < state.panels.length; i++) state.panels[i].run.ops.release(k);
+      recorder.release(state.frames, k);
       touched();
     },
     togglePin: function (k) {
       takeOver();
-      const pinned = s.cloth.pinned[k] !== 0;
-      for (let i = 0; i < s.panels.length; i++) {
-        if (pinned) s.panels[i].run.ops.unpin(k); else s.panels[i].run.ops.pin(k);
+      const pinned = state.cloth.pinned[k] !== 0;
+      for (let i = 0; i < state.panels.length; i++) {
+        if (pinned) state.panels[i].run.ops.unpin(k); else state.panels[i].run.ops.pin(k);
       }
-      if (pinned) recorder.unpin(s.frames, k); else recorder.pin(s.frames, k);
-      s.pinEdits[k] = !pinned;
+      if (pinned) recorder.unpin(state.frames, k); else recorder.pin(state.frames, k);
+      state.pinEdits[k] = !pinned;
       touched();
     },
     // Held by someone else: another pointer, or the scene's script (a replay's script lets go
     // when a person takes over, so its vertices can be grabbed then).
-    isHeld: function (k) { return s.cloth.held[k] !== 0 && (s.replayEnd < 0 || input.holds(k)); },
+    isHeld: function (k) { return state.cloth.held[k] !== 0 && (state.replayEnd < 0 || input.holds(k)); },
     bladeMode: function () { return bladeOn; },
     cut: function (x0, y0, x1, y1) {
       if (x0 === x1 && y0 === y1) return;
       takeOver();
-      for (let i = 0; i < s.panels.length; i++) s.panels[i].run.ops.cut(x0, y0, x1, y1);
-      recorder.cut(s.frames, x0, y0, x1, y1);
+      for (let i = 0; i < state.panels.length; i++) state.panels[i].run.ops.cut(x0, y0, x1, y1);
+      recorder.cut(state.frames, x0, y0, x1, y1);
       touched();
     },
     trail: function (clientX, clientY, start) {
       const r = canvas.getBoundingClientRect();
       blade.add(clientX - r.left, clientY - r.top, performance.now(), start);
-      s.trail = true;
+      state.trail = true;
     },
   });
 
   function touched() {
-    s.needMeasure = true;
-    s.dirty = true;
+    state.needMeasure = true;
+    state.dirty = true;
   }
 
   function resized(w, h, devW, devH) {
@@ -950,7 +953,7 @@
     input.reproject();
     measureOverlays();
     measureCanvas();
-    s.dirty = true;
+    state.dirty = true;
   }
 
   if (renderer.ok) {
@@ -987,7 +990,7 @@
   // panel i; hands[k]: for a held vertex, where its hand is (clientX, clientY: the pointer's
   // point in the cloth, which a hand of finite strength takes its vertex toward), else null.
   function stateOf(i) {
-    const p = s.panels[i], c = p.cloth, n = c.n_verts, pos = c.pos;
+    const p = state.panels[i], c = p.cloth, n = c.n_verts, pos = c.pos;
     const r = canvas.getBoundingClientRect();
     const out = { positions: [], screen: [], pinned: [], held: [], hands: [] };
     for (let k = 0; k < n; k++) {
@@ -1025,11 +1028,11 @@
     // Per panel: {label, scene (the panel's full scene JSON text), positions, screen,
     // rms_strain, max_strain, sim_ms}, and pinned, held, max_diff, max_stress.
     panels: function () {
-      return s.panels.map(function (p, i) {
+      return state.panels.map(function (p, i) {
         const st = stateOf(i);
-        const obj = Object.assign({}, s.sceneObj);
+        const obj = Object.assign({}, state.sceneObj);
         delete obj.compare;
-        if (s.compare.length) Object.assign(obj, s.compare[i]);
+        if (state.compare.length) Object.assign(obj, state.compare[i]);
         return { label: measure.label(p.cloth), scene: JSON.stringify(obj), positions: st.positions,
                  screen: st.screen, rms_strain: p.cloth.rms_strain, max_strain: p.cloth.max_strain,
                  sim_ms: p.simMs, pinned: st.pinned, held: st.held, hands: st.hands, max_diff: p.cloth.max_diff,
@@ -1048,7 +1051,7 @@
     setSolver: setSolver,
     setCutTool: setCutTool,
     reset: reset,
-    cloth: function () { return s.cloth; },
+    cloth: function () { return state.cloth; },
     // RGBA at client coordinates, read right after a fresh draw.
     pixels: function (points) {
       render();
@@ -1057,17 +1060,17 @@
     },
     info: function () {
       let simMs = NaN;
-      if (s.panels.length) simMs = s.panels[0].simMs;
+      if (state.panels.length) simMs = state.panels[0].simMs;
       return {
         webgl: renderer.ok ? renderer.version : 0, lost: !!renderer.lost, restores: renderer.restores || 0,
-        drawCalls: renderer.drawCalls || 0, paused: s.paused, mode: s.mode, scaleMode: s.scaleMode,
-        scale: s.scale, fullScale: s.fullScale, autoFloor: AUTO_FLOOR, frames: s.frames, preset: s.preset, params: s.params,
-        asleep: !!(s.cloth && allAsleep()), renders: s.renders,
-        replay: { playing: s.replayEnd >= 0, end: s.replayEnd, ended: s.replayEnded },
-        linkPending: !!s.linkPending, panels: s.panels.length, simMs: simMs, chartLatest: charts.latest(0),
-        edges: s.cloth ? s.cloth.n_edges : 0, broken: s.cloth ? s.cloth.broken : 0, cutTool: bladeOn,
+        drawCalls: renderer.drawCalls || 0, paused: state.paused, mode: state.mode, scaleMode: state.scaleMode,
+        scale: state.scale, fullScale: state.fullScale, autoFloor: AUTO_FLOOR, frames: state.frames, preset: state.preset, params: state.params,
+        asleep: !!(state.cloth && allAsleep()), renders: state.renders,
+        replay: { playing: state.replayEnd >= 0, end: state.replayEnd, ended: state.replayEnded },
+        linkPending: !!state.linkPending, panels: state.panels.length, simMs: simMs, chartLatest: charts.latest(0),
+        edges: state.cloth ? state.cloth.n_edges : 0, broken: state.cloth ? state.cloth.broken : 0, cutTool: bladeOn,
         recorded: recorder.count(), recordingFull: recorder.full(),
-        error: ui.errorText(), note: ui.noteText(), scene: s.sceneText,
+        error: ui.errorText(), note: ui.noteText(), scene: state.sceneText,
         canvas: [canvas.width, canvas.height], dpr: window.devicePixelRatio || 1,
       };
     },
@@ -1075,8 +1078,8 @@
 
   // ---- start --------------------------------------------------------------
 
-  ui.setMode(s.mode);
-  ui.setScale(s.scaleMode, s.fullScale);
+  ui.setMode(state.mode);
+  ui.setScale(state.scaleMode, state.fullScale);
   // On a small stage (a phone) the charts start hidden: with the readouts they would take
   // most of it. The Live charts box shows them.
   {
@@ -1101,18 +1104,18 @@
   function openLink() {
     const linked = share.sceneIn(window.location.hash);
     if (!linked) return;
-    const wasPaused = s.paused;
+    const wasPaused = state.paused;
     setPaused(true);
-    s.linkPending = true;
+    state.linkPending = true;
     linked.then(function (text) {
       load(text, 'custom', null);
-      ui.note('Replaying the recording from the link (' + s.replayEnd + ' frames); a gesture takes over');
+      ui.note('Replaying the recording from the link (' + state.replayEnd + ' frames); a gesture takes over');
     }).catch(function (e) {
-      const shown = own(scenes.PRESETS, s.preset)
-        ? 'showing the ' + scenes.PRESETS[s.preset].label + ' preset' : 'the scene shown runs on';
+      const shown = own(scenes.PRESETS, state.preset)
+        ? 'showing the ' + scenes.PRESETS[state.preset].label + ' preset' : 'the scene shown runs on';
       ui.error('The link could not be opened: ' + core.message(e) + '; ' + shown);
       setPaused(wasPaused);
-    }).then(function () { s.linkPending = false; });
+    }).then(function () { state.linkPending = false; });
   }
   openLink();
   window.addEventListener('hashchange', openLink);
