@@ -130,7 +130,7 @@ def parse_module(text, module):
 
 def link(js_dir, entry='api'):
     """Link the ES modules under js_dir, reachable from entry, into one classic
-    script that defines the single global `clothTranscrypt` = {api, modules}."""
+    script that defines the single global `clothTranscrypt` = {api}."""
     parsed = {}
     order = []
 
@@ -161,8 +161,8 @@ def link(js_dir, entry='api'):
         fields = ', '.join('%s: %s' % (exported, local) for exported, local in exports)
         out.append('return {%s};' % fields)
         out.append('})();')
-    out.append('return {api: %s, modules: {%s}};' % (
-        _ident(entry), ', '.join("'%s': %s" % (m, _ident(m)) for m in order)))
+    # Only the entry point: the page and the benchmark go through cloth/api.py, never past it.
+    out.append('return {api: %s};' % _ident(entry))
     out.append('})();')
     return '\n'.join(out) + '\n'
 

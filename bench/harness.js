@@ -110,15 +110,14 @@
   };
   B.tearRound = function (frames) {  // ms of `frames` frames, and of as many checks
     const r = B.tear, cl = r.cloth;
-    const mark = clothTranscrypt.modules['cloth.solve'].mark_overstretched;
+    const tearCheck = clothTranscrypt.api.tear_check;
     const most = cl.tear_q.length;
     M.step(r, frames, 0);
     const t0 = performance.now();
     let found = 0;
     // Ten checks a frame: a check is microseconds and the clock's step 100 us on file://.
     for (let i = 0; i < 10 * frames; i++) {
-      found += mark(cl.pos, cl.edge_a, cl.edge_b, cl.rest, cl.n_edges, cl.consts, most,
-                    cl.tear_q, cl.tear_e);
+      found += tearCheck(cl, most);
     }
     const check = performance.now() - t0;
     if (found > 0) throw new Error('the check broke edges: the limit is reached');

@@ -7,7 +7,9 @@ returns, and the parity tests compare its CPython and browser results number for
 from cloth.host import to_json, kind_of, is_finite, parse_json
 from cloth.scene import (parse_scene, settings_scene, SceneError, fail, MAX_FRAMES, MATERIALS,
                          DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large)
-from cloth.sim import Cloth, frame, measure, grab, move, move_by, release, pin, unpin, retune, cut
+from cloth.sim import Cloth, frame, measure, grab, move, move_by, release, pin, unpin, retune, cut, \
+    nearest
+from cloth.solve import mark_overstretched
 
 # A trace holds frames x vertices points. The CLI streams it (cloth/__main__.py: memory
 # stays that of one frame); in memory, as `run` holds it, it would be gigabytes.
@@ -34,6 +36,24 @@ def materials():
     """The named fabrics of the page's Material control (scene.MATERIALS: name, label,
     density kg/m^2, stiffness N/m) and the presets' own, declared once for both runtimes."""
     return [MATERIALS, DEFAULT_MATERIAL]
+
+
+def operations():
+    """[[name, function]] of the operations the page calls on a running cloth, every frame or
+    every pointer event: cloth/sim.py's module functions, each taking the cloth first. The page
+    calls them as they are, because a Transcrypt bound method (cloth.frame()) copies its
+    arguments into fresh arrays on every call, which the hot loop must not do."""
+    return [['frame', frame], ['measure', measure], ['grab', grab], ['move', move],
+            ['move_by', move_by], ['release', release], ['pin', pin], ['unpin', unpin],
+            ['nearest', nearest], ['cut', cut]]
+
+
+def tear_check(cloth, most):
+    """The tear check a frame makes (solve.mark_overstretched over every edge, up to `most`
+    marked), on its own: the benchmark times it against whole frames. Returns how many edges
+    it marked."""
+    return mark_overstretched(cloth.pos, cloth.edge_a, cloth.edge_b, cloth.rest, cloth.n_edges,
+                              cloth.consts, most, cloth.tear_q, cloth.tear_e)
 
 
 def scene_limit():

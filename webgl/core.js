@@ -6,7 +6,7 @@
 // the same one-line message the CLI prints.
 'use strict';
 
-window.clothCore = (function (api, modules) {
+window.clothCore = (function (api) {
   function message(e) {
     if (e instanceof Error) return e.message;
     if (e && e.__args__ && e.__args__.length > 0) return String(e.__args__[0]);
@@ -57,25 +57,17 @@ window.clothCore = (function (api, modules) {
   // check); with a panel index (from 0), the scene of that panel of its `compare` list.
   core.parseScene = wrap(function (text, panel) { return api.check(text, panel === undefined ? -1 : panel); });
 
-  // ops(cloth): the per-frame operations as closures over one cloth, made once per
-  // scene. They call cloth/sim.py's module functions where it has them: calling a
-  // Transcrypt bound method (cloth.frame()) copies its arguments into fresh arrays
-  // on every call, which the hot loop must not do. Errors stay Transcrypt's here;
+  // ops(cloth): the per-frame operations (cloth/api.py operations: cloth/sim.py's module
+  // functions) as closures over one cloth, made once per scene. Errors stay Transcrypt's here;
   // callers that need messages use core.message(e).
-  const sim = modules['cloth.sim'] || {};
-  const OPS = ['frame', 'measure', 'grab', 'move', 'move_by', 'release', 'pin', 'unpin', 'nearest', 'cut'];
+  const OPERATIONS = api.operations();
   core.ops = function (cloth) {
     const ops = {};
-    OPS.forEach(function (name) {
-      const fn = sim[name];
-      if (typeof fn === 'function' && fn.length >= 1) {
-        ops[name] = function (a, b, c, d) { return fn(cloth, a, b, c, d); };
-      } else {
-        const bound = cloth[name];  // looked up once: Transcrypt binds on each lookup
-        ops[name] = function (a, b, c, d) { return bound(a, b, c, d); };
-      }
+    OPERATIONS.forEach(function (entry) {
+      const fn = entry[1];
+      ops[entry[0]] = function (a, b, c, d) { return fn(cloth, a, b, c, d); };
     });
     return ops;
   };
   return core;
-})(clothTranscrypt.api, clothTranscrypt.modules);
+})(clothTranscrypt.api);
