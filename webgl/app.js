@@ -60,6 +60,7 @@
     baseNext: 0,        // the index of state.base's next scripted action (core.applyDue)
     trail: false,       // the blade's trail is fading out: keep drawing it
     linkPending: false, // a link is being copied (the clipboard answers later)
+    slowWarning: '',    // what load() warned of a scene too heavy for real time ('' for none)
   };
   const recorder = window.clothRecorder.create();
   const share = window.clothShare;
@@ -104,9 +105,9 @@
 
   const renderer = window.clothRenderer.create(canvas, {
     webgl: options.webgl,
-    onLost: function () { ui.error('The WebGL context was lost; waiting for the browser to restore it.'); },
+    onLost: function () { ui.error('The WebGL context was lost; waiting for the browser to restore it.', 'context'); },
     onRestored: function () {
-      if (ui.errorText().indexOf('WebGL context was lost') >= 0) ui.clearError();
+      ui.clearError('context');
       state.panels.forEach(function (p) { p.draw.setScene(p.cloth); });
       state.dirty = true;
     },
@@ -212,10 +213,10 @@
     ui.setParams(state.params);
     if (renderer.ok && !renderer.lost) render();
     const work = scenes.workOf(obj) * Math.max(1, state.compare.length);
-    if (work > scenes.REAL_TIME_WORK) {
-      ui.note('This scene needs about ' + work.toExponential(1) + ' edge updates a frame: ' +
-              'expect slow motion on an ordinary machine');
-    }
+    state.slowWarning = work > scenes.REAL_TIME_WORK ?
+      'This scene needs about ' + work.toExponential(1) + ' edge updates a frame: ' +
+      'expect slow motion on an ordinary machine' : '';
+    if (state.slowWarning) ui.note(state.slowWarning);
     if (state.replayEnd === 0) endReplay();
     else if (state.replayEnd > 0) setPaused(false);
     return state.cloth;
@@ -528,7 +529,7 @@
     holds.forEach(function (h) { if (h.k < 0) dropped.push('the held vertex at ' + place(h.was)); });
     const notes = [];
     if (note) notes.push(note);
-    if (ui.noteText().indexOf('slow motion') >= 0) notes.push(ui.noteText());   // load()'s warning
+    if (state.slowWarning) notes.push(state.slowWarning);
     if (dropped.length) {
       notes.push('outside the ' + p.cols + '×' + p.rows + ' grid, dropped: ' +
                  dropped.slice(0, 6).join(', ') + (dropped.length > 6 ? ', …' : ''));

@@ -66,6 +66,7 @@ window.clothUI = (function () {
     };
     const params = ['cols', 'rows', 'iterations', 'substeps', 'gravity', 'damping', 'tear'];
     let noteTimer = 0;
+    let errorAbout = '';   // what the shown error is about (error, clearError)
     let legendName = 'edge |diff|';
     let helpReturn = null;
     // A button clicked with a pointer gives focus back to the page, so that Space and the
@@ -258,8 +259,15 @@ window.clothUI = (function () {
         clearTimeout(noteTimer);
         if (msg) noteTimer = setTimeout(function () { el.note.hidden = true; }, 6000);
       },
-      error: function (msg) { el.bannerText.textContent = msg; el.banner.hidden = false; },
-      clearError: function () { hide(el.banner); el.bannerText.textContent = ''; },
+      // An error may name what it is about (`about`), so that what ends that condition clears
+      // it and nothing else (a later error replaces it, and its own end then clears nothing).
+      error: function (msg, about) {
+        el.bannerText.textContent = msg; el.banner.hidden = false; errorAbout = about || '';
+      },
+      clearError: function (about) {
+        if (about !== undefined && about !== errorAbout) return;
+        hide(el.banner); el.bannerText.textContent = ''; errorAbout = '';
+      },
       errorText: function () { return el.banner.hidden ? '' : el.bannerText.textContent; },
       noteText: function () { return el.note.hidden ? '' : el.note.textContent; },
       fatal: function (msg) { el.fatal.textContent = msg; el.fatal.hidden = !msg; },

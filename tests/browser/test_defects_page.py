@@ -124,6 +124,10 @@ def test_a_heavy_scene_says_before_it_runs_slowly(open_page):
         {'cols': 150, 'rows': 150, 'spacing': 0.01, 'pins': [0, 149], 'solver': 'jakobsen',
          'iterations': 60}))
     assert 'slow motion' in note(pg)
+    # A new grid of it says so again, beside what the regrid itself reports.
+    pg.js('clothApp.setPaused(true)')
+    set_input(pg, '#cols', '160')
+    assert pg.info()['params']['cols'] == 160 and 'slow motion' in note(pg), note(pg)
 
 
 # ---- 3: many actions, any order --------------------------------------------------------------

@@ -115,6 +115,24 @@ def test_context_loss_and_restore(open_page):
     assert sum(1 for c in px if c[0] > 60) > len(pts) // 2, 'nothing drawn after the restore'
 
 
+
+def test_a_restored_context_clears_only_its_own_error(open_page):
+    """The restore clears the banner that said the context was lost, and not an error shown
+    since (the page keeps what its banner is about; it never reads the banner's text)."""
+    pg = open_page()
+    pg.js('''() => {
+        const gl = document.getElementById('view').getContext('webgl2');
+        window.__lose = gl.getExtension('WEBGL_lose_context');
+        window.__lose.loseContext();
+    }''')
+    pg.wait_for_function('clothApp.info().lost')
+    pg.js("() => { try { clothApp.loadScene('{\"cols\": -3}'); } catch (e) {} }")
+    shown = pg.locator('#banner').inner_text()
+    assert 'context was lost' not in shown and 'Scene not loaded' in shown, shown
+    pg.js('window.__lose.restoreContext()')
+    pg.wait_for_function('!clothApp.info().lost && clothApp.info().restores === 1')
+    assert pg.locator('#banner').inner_text() == shown
+
 def test_webgl1_path(open_page):
     pg = open_page('?webgl=1')
     info = pg.info()
