@@ -95,13 +95,18 @@ def test_default_scene_draws_both_modes(open_page):
     assert any(c[2] > 100 for c in cols)
 
 
-def test_context_loss_and_restore(open_page):
-    pg = open_page()
+def lose_context(pg):
+    """Lose the page's WebGL context (window.__lose restores it)."""
     pg.js('''() => {
         const gl = document.getElementById('view').getContext('webgl2');
         window.__lose = gl.getExtension('WEBGL_lose_context');
         window.__lose.loseContext();
     }''')
+
+
+def test_context_loss_and_restore(open_page):
+    pg = open_page()
+    lose_context(pg)
     pg.wait_for_function('clothApp.info().lost')
     assert 'context was lost' in pg.locator('#banner').inner_text()
     frames = pg.info()['frames']
@@ -120,11 +125,7 @@ def test_a_restored_context_clears_only_its_own_error(open_page):
     """The restore clears the banner that said the context was lost, and not an error shown
     since (the page keeps what its banner is about; it never reads the banner's text)."""
     pg = open_page()
-    pg.js('''() => {
-        const gl = document.getElementById('view').getContext('webgl2');
-        window.__lose = gl.getExtension('WEBGL_lose_context');
-        window.__lose.loseContext();
-    }''')
+    lose_context(pg)
     pg.wait_for_function('clothApp.info().lost')
     pg.js("() => { try { clothApp.loadScene('{\"cols\": -3}'); } catch (e) {} }")
     shown = pg.locator('#banner').inner_text()
