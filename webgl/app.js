@@ -61,6 +61,7 @@
     trail: false,       // the blade's trail is fading out: keep drawing it
     linkPending: false, // a link is being copied (the clipboard answers later)
     slowWarning: '',    // what load() warned of a scene too heavy for real time ('' for none)
+    relayouts: 0,       // how many times the views were laid out again (info(): the tests)
   };
   const recorder = window.clothRecorder.create();
   const share = window.clothShare;
@@ -950,6 +951,7 @@
   // The views laid out again (a resize, the charts shown or hidden): a held vertex stays under
   // its pointer, and the overlays' and the canvas's boxes are measured anew.
   function relayout() {
+    state.relayouts++;
     layout();
     input.reproject();
     measureOverlays();
@@ -1064,6 +1066,7 @@
       if (state.panels.length) simMs = state.panels[0].simMs;
       return {
         webgl: renderer.ok ? renderer.version : 0, lost: !!renderer.lost, restores: renderer.restores || 0,
+        relayouts: state.relayouts,
         drawCalls: renderer.drawCalls || 0, paused: state.paused, mode: state.mode, scaleMode: state.scaleMode,
         scale: state.scale, fullScale: state.fullScale, autoFloor: AUTO_FLOOR, frames: state.frames, preset: state.preset, params: state.params,
         asleep: !!(state.cloth && allAsleep()), renders: state.renders,

@@ -408,17 +408,25 @@ def test_a_touch_drag_and_a_double_tap_pin(open_page):
     rec.load_small(pg)                       # 12x9: the CLI replays it in a moment
     pg.js('clothApp.advance(120)')
     finger = Finger(pg)
+    layouts = pg.info()['relayouts']
     x, y = pg.at(8 * 12 + 6)
     before = pg.state()
     finger.down(x, y)
     held = [i for i, h in enumerate(pg.state()['held']) if h]
-    assert len(held) == 1 and pg.state()['positions'] == before['positions']
+    assert held == [8 * 12 + 6] and pg.state()['positions'] == before['positions']
     k = held[0]
+    # The hand keeps its grip's offset and follows the finger from there. Measured from where
+    # it took hold, not from the vertex's position read before the touch: in one CI run of
+    # WebKit under load the hand was 12 px above the finger from the first move on, as when
+    # the views are laid out again between that read and the touch (the vertex is then taken
+    # with an offset, which is right); `relayouts` says whether that happened.
+    hand = pg.state()['hands'][k]
     for i in range(1, 9):
         finger.move(x + 12 * i, y - 9 * i)
         pg.js('clothApp.advance(1)')
         s = pg.state()
-        assert s['held'][k] and near(s['hands'][k], (x + 12 * i, y - 9 * i)), (s['hands'][k], i)
+        assert s['held'][k] and near(s['hands'][k], (hand[0] + 12 * i, hand[1] - 9 * i)), (
+            s['hands'][k], hand, i, pg.info()['relayouts'] - layouts)
     finger.up()
     assert not pg.state()['held'][k]
     pg.js('clothApp.advance(60)')
