@@ -7,7 +7,7 @@ import platform
 import sys
 import time
 
-from bench.page import ROOT, Progress, BenchError, open_page
+from bench.page import ROOT, Progress, BenchError
 from bench.speed import MODES, DAMPING, WIDTH, SEED, bench, check_targets
 from bench.report import markdown, svg_plot, json_safe, PLOT_FLOOR
 from bench.gestures import gestures
@@ -42,7 +42,7 @@ def main(argv=None):
         from bench import physics as bench_physics, figures as bench_figures
         module, name = (bench_physics, 'physics') if args.physics else (bench_figures, 'figures')
         try:
-            md, result = module.run(args.quick, progress, open_page)
+            md, result = module.run(args.quick, progress)
         except BenchError as err:
             sys.stderr.write('error: %s\n' % err)
             return 1

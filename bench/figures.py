@@ -18,6 +18,7 @@ import math
 import os
 import time
 
+from bench.page import HARNESS, page_of, open_page
 from bench.physics import edge_strains
 from cloth.reference import pendulum_period, slack_hang
 from cloth.scene import Scene
@@ -265,7 +266,6 @@ def tether_table(quick):
 def draw_table(browser, progress):
     """Each scene in a tab of its own, the app running as a person sees it (open_page's tab
     has its loop stopped)."""
-    from bench.page import HARNESS, page_of
     rows = []
     for name, n in DRAW:
         page = page_of(browser, [])
@@ -384,7 +384,7 @@ def markdown(res):
     return '\n'.join(out) + '\n'
 
 
-def run(quick, progress, open_page):
+def run(quick, progress):
     from playwright.sync_api import sync_playwright
     t0 = time.time()
     res = {'tethers': tether_table(quick)}

@@ -18,6 +18,7 @@ import json
 import math
 import time
 
+from bench.page import open_page
 from cloth.reference import hanging_column_strains, elastic_chain
 
 RELEASE_PRESETS = ['curtain', 'corners', 'chain', 'large', 'tearable']
@@ -278,7 +279,7 @@ def markdown(release, fields, meta):
     return '\n'.join(out) + '\n'
 
 
-def run(quick, progress, open_page):
+def run(quick, progress):
     """Both tables in one page; returns (markdown, result)."""
     from playwright.sync_api import sync_playwright
     t0 = time.time()
