@@ -1,12 +1,44 @@
 // The benchmark's side in the page (bench/page.py injects this file into dist/index.html and
 // drives it): groups of configurations, references, the speed-of-light yardstick and the
-// gestures. Every frame it times is stepped, timed and measured by webgl/measure.js, the code
+// gestures. Every frame it times is stepped, timed and measured by webgl/runner.js, the code
 // the page's compare mode runs, so that what the page shows and what the benchmark reports
 // are measured alike.
 'use strict';
 
 (() => {
-  const M = window.clothMeasure;
+  const M = window.clothRunner;
+
+  // Distances between two position arrays of n vertices: RMS and largest.
+  function rmsError(pos, ref, n) {
+    let s = 0;
+    for (let k = 0; k < n; k++) {
+      const dx = pos[2 * k] - ref[2 * k], dy = pos[2 * k + 1] - ref[2 * k + 1];
+      s += dx * dx + dy * dy;
+    }
+    return Math.sqrt(s / n);
+  }
+
+  function maxError(pos, ref, n) {
+    let worst = 0;
+    for (let k = 0; k < n; k++) {
+      const dx = pos[2 * k] - ref[2 * k], dy = pos[2 * k + 1] - ref[2 * k + 1];
+      worst = Math.max(worst, dx * dx + dy * dy);
+    }
+    return Math.sqrt(worst);
+  }
+
+  // The rest grid: the exact hang of a curtain.
+  function restGrid(cl) {
+    const ref = new Float64Array(2 * cl.n_verts);
+    for (let r = 0; r < cl.rows; r++) {
+      for (let c = 0; c < cl.cols; c++) {
+        const k = r * cl.cols + c;
+        ref[2 * k] = c * cl.spacing;
+        ref[2 * k + 1] = -r * cl.spacing;
+      }
+    }
+    return ref;
+  }
   const B = window.__bench = { groups: {} };
 
   // A group: every configuration of one scene at one size, plus its reference.
@@ -19,7 +51,7 @@
 
   B.exactRest = function (key) {
     const g = B.groups[key];
-    g.refStatic = M.restGrid(g.runs[0].cloth);
+    g.refStatic = restGrid(g.runs[0].cloth);
   };
 
   // An exact reference computed in CPython (cloth/reference.py): [x0, y0, x1, y1, ...].
@@ -45,7 +77,7 @@
       if (g.check) M.step(g.check, 1, 0);
       if (want.has(g.ref.frame)) {
         g.refSnaps[g.ref.frame] = Float64Array.from(g.ref.cloth.pos);
-        if (g.check) g.checkErr.push(M.rmsError(g.check.cloth.pos, g.ref.cloth.pos, g.ref.cloth.n_verts));
+        if (g.check) g.checkErr.push(rmsError(g.check.cloth.pos, g.ref.cloth.pos, g.ref.cloth.n_verts));
       }
     }
     return g.ref.frame;
@@ -74,8 +106,8 @@
       const ref = g.refStatic || g.refSnaps[r.frame];
       out.push({ i: i, ms: r.ms, proj: r.proj, frame: r.frame,
                  rms_strain: cl.rms_strain, max_strain: cl.max_strain,
-                 err: ref ? M.rmsError(cl.pos, ref, cl.n_verts) : null,
-                 max_err: ref ? M.maxError(cl.pos, ref, cl.n_verts) : null });
+                 err: ref ? rmsError(cl.pos, ref, cl.n_verts) : null,
+                 max_err: ref ? maxError(cl.pos, ref, cl.n_verts) : null });
     }
     return out;
   };

@@ -13,7 +13,7 @@ ARGS = ['--no-sandbox', '--enable-unsafe-swiftshader', '--disable-background-net
         '--disable-component-update', '--disable-sync', '--no-first-run', '--disable-quic',
         '--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE localhost , EXCLUDE 127.0.0.1']
 
-# The benchmark's JS: bench/harness.js, on webgl/measure.js (shipped in the page: the code the
+# The benchmark's JS: bench/harness.js, on webgl/runner.js (shipped in the page: the code the
 # page's compare mode measures with).
 HARNESS = os.path.join(ROOT, 'bench', 'harness.js')
 
@@ -61,9 +61,9 @@ def open_page(p, progress):
         window.clothApp.setPaused(true);
       window.requestAnimationFrame = function () { return 0; };
     }""")
-    if not page.evaluate("() => typeof window.clothMeasure === 'object'"):
+    if not page.evaluate("() => typeof window.clothRunner === 'object'"):
         browser.close()
-        raise BenchError('dist/index.html has no window.clothMeasure; rebuild it with `python build.py`')
+        raise BenchError('dist/index.html has no window.clothRunner; rebuild it with `python build.py`')
     page.add_script_tag(path=HARNESS)
     progress('Chromium %s (%s), page %s' % (browser.version, kwargs.get('executable_path',
              'Playwright build'), os.path.relpath(DIST, ROOT)))

@@ -69,7 +69,7 @@ def markdown(result):
     cm = result.get('compare_mode')
     if cm:
         lines.append('Compare mode (the page runs N panels under the same hands; the default on the '
-                     'curtain %dx%d, stepped by webgl/measure.js as the page steps them): %s.' % (
+                     'curtain %dx%d, stepped by webgl/runner.js as the page steps them): %s.' % (
                          cm['size'], cm['size'], '; '.join(
                              '%d panel%s %s ms/frame (%s one)' % (
                                  r['panels'], '' if r['panels'] == 1 else 's', fmt(r['ms_per_frame']),

@@ -120,7 +120,7 @@ def base_scene(kind, n):
 
 
 def scene_actions(kind, n, frames):
-    """The scripted actions, as the scene JSON spells them (webgl/measure.js applies them the
+    """The scripted actions, as the scene JSON spells them (webgl/runner.js applies them the
     way cloth.api.simulate does: those of frame 0 first, those of frame f after frame f)."""
     if kind == 'corners':
         return [{'frame': 0, 'op': 'grab', 'vertex': n - 1, 'to': [CORNER_X, 0.0]},
@@ -262,7 +262,7 @@ def run_group(page, kind, n, mode, progress):
 
 def compare_cost(page, n, reps, progress):
     """Compare mode's cost: 1 to 4 panels of the default on the n x n curtain, stepped one
-    after the other by webgl/measure.js as the page's loop steps them; ms per frame of them all
+    after the other by webgl/runner.js as the page's loop steps them; ms per frame of them all
     against one panel, in rotated order each repetition. About N times one is expected; the
     table shows what it is (no assertion on time)."""
     s = base_scene('curtain', n)

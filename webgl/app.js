@@ -33,12 +33,12 @@
   const READOUT_MS = 250;      // readout refresh period
   const EMA = 0.1;             // smoothing of the timing readouts
 
-  const core = window.clothCore, scenes = window.clothScenes, measure = window.clothMeasure;
+  const core = window.clothCore, scenes = window.clothScenes, runner = window.clothRunner;
   const canvas = document.getElementById('view');
   const options = window.clothOptions.parse(window.location.search, scenes.PRESETS);
   const own = window.clothOptions.own;
 
-  // A panel: {cloth, run (measure.js: ops, script index, batch timing), draw (its renderer
+  // A panel: {cloth, run (runner.js: ops, script index, batch timing), draw (its renderer
   // panel), simMs, clamped}. state.cloth is the first panel's: the one the readouts, the
   // recording's checks and state() describe. state.base is a cloth that follows the scene's
   // settings without the panels' own (never stepped): what the settings panel shows.
@@ -193,8 +193,8 @@
     recorder.start(obj, window.clothRecorder.scriptOf(state.cloth), state.cloth.n_verts);
     state.replayEnd = typeof obj.frames === 'number' ? obj.frames : -1;
     state.replayEnded = false;
-    // The scene's own actions of frame 0 come before any frame (measure.run applies them).
-    state.panels.forEach(function (p) { p.run = measure.run(p.cloth); });
+    // The scene's own actions of frame 0 come before any frame (runner.run applies them).
+    state.panels.forEach(function (p) { p.run = runner.run(p.cloth); });
     scripted(0, state.panels[0].run.next);
     state.wanted = 0; state.played = 0; state.speed = 1;
     charts.reset(state.panels.length);
@@ -611,8 +611,8 @@
     }
     const first = state.panels[0].run, from = first.next;
     const share_ = state.panels.length > 1 ? budgetMs / state.panels.length : budgetMs;
-    const done = measure.step(first, n, budgetMs > 0 ? share_ : 0);
-    for (let i = 1; i < state.panels.length; i++) measure.step(state.panels[i].run, done, 0);
+    const done = runner.step(first, n, budgetMs > 0 ? share_ : 0);
+    for (let i = 1; i < state.panels.length; i++) runner.step(state.panels[i].run, done, 0);
     state.frames += done;
     scripted(from, first.next);
     for (let i = 0; i < state.panels.length; i++) {
@@ -752,7 +752,7 @@
         // A narrow panel (a phone, four panels) gets the short label: the solver and its
         // steps; the RMS strain and the cost. The numbers come first on their line and are
         // never cut (compare.js).
-        const r = state.rects[i], small = !r || r.w < 340, label = measure.label(p.cloth);
+        const r = state.rects[i], small = !r || r.w < 340, label = runner.label(p.cloth);
         const ms = Number.isFinite(p.simMs) ? p.simMs.toFixed(2) + (small ? ' ms' : ' ms/frame') : 'at rest';
         compareUI.setLabel(i, (i + 1) + ' · ' + (small ? label.split(',')[0] : label),
           small ? 'rms ' + fmt(p.cloth.rms_strain) + ' · ' + ms
@@ -1036,7 +1036,7 @@
         const obj = Object.assign({}, state.sceneObj);
         delete obj.compare;
         if (state.compare.length) Object.assign(obj, state.compare[i]);
-        return { label: measure.label(p.cloth), scene: JSON.stringify(obj), positions: st.positions,
+        return { label: runner.label(p.cloth), scene: JSON.stringify(obj), positions: st.positions,
                  screen: st.screen, rms_strain: p.cloth.rms_strain, max_strain: p.cloth.max_strain,
                  sim_ms: p.simMs, pinned: st.pinned, held: st.held, hands: st.hands, max_diff: p.cloth.max_diff,
                  max_stress: p.cloth.max_stress };

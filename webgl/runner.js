@@ -1,6 +1,7 @@
-// The measuring code shared by the page's compare mode and the benchmark (bench/ drives
-// it in Chromium): what the page shows and what the benchmark reports are timed and
-// measured by these same functions.
+// Runs: a cloth stepped frame by frame with its scene's scripted actions, in timed batches.
+// The page's loop (every panel of compare mode) and the benchmark (bench/harness.js, in
+// Chromium) both step cloths through these functions, so what the page shows and what the
+// benchmark reports are stepped and timed alike.
 //
 // A run is {cloth, ops, next, frame, ms, proj}: a cloth, its operations (clothCore.ops),
 // the index of its scene's next scripted action, the frames it has run, and the time and
@@ -8,7 +9,7 @@
 // performance.now() (its resolution is 100 us on file://; per-frame timings would be noise).
 'use strict';
 
-window.clothMeasure = (function () {
+window.clothRunner = (function () {
   const core = window.clothCore;
 
   function run(cloth) {
@@ -61,37 +62,5 @@ window.clothMeasure = (function () {
     return parts.join(', ');
   }
 
-  function rmsError(pos, ref, n) {
-    let s = 0;
-    for (let k = 0; k < n; k++) {
-      const dx = pos[2 * k] - ref[2 * k], dy = pos[2 * k + 1] - ref[2 * k + 1];
-      s += dx * dx + dy * dy;
-    }
-    return Math.sqrt(s / n);
-  }
-
-  function maxError(pos, ref, n) {
-    let worst = 0;
-    for (let k = 0; k < n; k++) {
-      const dx = pos[2 * k] - ref[2 * k], dy = pos[2 * k + 1] - ref[2 * k + 1];
-      worst = Math.max(worst, dx * dx + dy * dy);
-    }
-    return Math.sqrt(worst);
-  }
-
-  // The rest grid: the exact hang of a curtain.
-  function restGrid(cl) {
-    const ref = new Float64Array(2 * cl.n_verts);
-    for (let r = 0; r < cl.rows; r++) {
-      for (let c = 0; c < cl.cols; c++) {
-        const k = r * cl.cols + c;
-        ref[2 * k] = c * cl.spacing;
-        ref[2 * k + 1] = -r * cl.spacing;
-      }
-    }
-    return ref;
-  }
-
-  return { run: run, step: step, describe: describe, label: label, rmsError: rmsError,
-           maxError: maxError, restGrid: restGrid };
+  return { run: run, step: step, describe: describe, label: label };
 })();
