@@ -230,7 +230,14 @@ def test_random_blades_through_the_pointer_path(open_page, script, tear):
 
 def test_a_torn_cloth_allocates_nothing_per_frame(open_page):
     """After its first break a cloth has its bookkeeping (links, cells, pieces) for good: the
-    frames of a torn cloth, with the tear check on, allocate nothing."""
+    frames of a torn cloth, with the tear check on, allocate nothing, garbage included (the
+    profile keeps the samples of objects collected since). Measured in the page's stepping
+    (`simulate`; a draw after new breaks lays out the edges anew) over successive windows of
+    frames after a warm-up, one of which must be clean: an allocation per frame shows in every
+    window (a two-element list made each frame: 60-150 bytes a frame in all four), while V8
+    finishing its optimisation shows in one (measured 2026-12-04: between frames 3000 and 6000
+    of this scene `solve_lines` or `project_cells` was deoptimised once, "insufficient type
+    feedback" on a branch a torn cloth first takes then, about 10 kB, and nothing after)."""
     pg = open_page()
     load(pg, cols=40, rows=30, tear=0.5, pins=list(range(0, 40, 3)) + [39])
     a = screen_between(pg, 10 * 40 + 3, 11 * 40 + 3)
@@ -239,10 +246,17 @@ def test_a_torn_cloth_allocates_nothing_per_frame(open_page):
     pg.js('clothApp.advance(3000)')        # warm: until every kernel is optimised (as test_soak)
     cdp = pg.context.new_cdp_session(pg.page)
     cdp.send('HeapProfiler.enable')
-    cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256})
     frames = 2000
-    pg.js('(n) => clothApp.advance(n)', frames)
-    profile = cdp.send('HeapProfiler.stopSampling')['profile']
+    per_frame = []
+    for window in range(4):
+        cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256,
+                                                'includeObjectsCollectedByMajorGC': True,
+                                                'includeObjectsCollectedByMinorGC': True})
+        pg.js('(n) => clothApp.advance(n)', frames)
+        profile = cdp.send('HeapProfiler.stopSampling')['profile']
+        per_frame.append(bytes_under(profile['head'], 'simulate') / frames)
+        if per_frame[-1] < 2:
+            break
 
     assert pg.info()['broken'] > 0
-    assert bytes_under(profile['head'], 'advance') / frames < 2
+    assert per_frame[-1] < 2, per_frame
