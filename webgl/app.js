@@ -173,7 +173,7 @@
       throw new Error(msg);
     }
     ui.clearError();
-    input.releaseAll(holds || []);
+    gestures.releaseAll(holds || []);
     state.compare = Array.isArray(obj.compare) ? obj.compare.map(function (o) { return Object.assign({}, o); }) : [];
     state.panels = cloths.map(function (cloth, i) {
       return { cloth: cloth, run: null, draw: renderer.ok ? renderer.panel(i) : null,
@@ -205,7 +205,7 @@
     }
     // The pointers that kept a vertex hold it again, where it now is, keeping on with their
     // pointer from here (recorded as grabs, at frame 0 of the new recording).
-    input.regrab();
+    gestures.regrab();
     state.panels.forEach(function (p) { p.cloth.measure(); });
     state.needMeasure = false;
     state.dirty = true;
@@ -231,7 +231,7 @@
     const actions = state.cloth.scene.actions;
     if (state.base !== state.cloth) state.baseNext = core.applyDue(state.base, state.baseNext, state.frames);
     for (let i = from; i < to; i++) {
-      if (actions[i].op === 'grab') input.forget(actions[i].vertex);
+      if (actions[i].op === 'grab') gestures.forget(actions[i].vertex);
     }
     state.params = paramsOf(state.base);
     if (to > from) {
@@ -261,7 +261,7 @@
       recorder.truncate(state.frames);
       const c = state.cloth;
       for (let k = 0; k < c.n_verts; k++) {
-        if (c.held[k] !== 0 && !input.holds(k)) {
+        if (c.held[k] !== 0 && !gestures.holds(k)) {
           state.panels.forEach(function (p) { p.run.ops.release(k); });
           recorder.release(state.frames, k);
         }
@@ -518,7 +518,7 @@
       if (pinned) pins[m] = true; else delete pins[m];
     });
     obj.pins = Object.keys(pins).map(Number).sort(function (x, y) { return x - y; });
-    const holds = input.held().map(function (h) { return { k: moved(h.k), was: h.k, id: h.id }; });
+    const holds = gestures.held().map(function (h) { return { k: moved(h.k), was: h.k, id: h.id }; });
     const text = JSON.stringify(obj);
     try {
       load(text, preset, view, holds);
@@ -664,7 +664,7 @@
   }
 
   function fadeOverlays() {
-    const dragging = input.dragging() > 0 && renderer.ok;
+    const dragging = gestures.count() > 0 && renderer.ok;
     for (let i = 0; i < overlayEls.length; i++) {
       let under = false;
       if (dragging) {
@@ -839,9 +839,10 @@
     return -1;
   }
 
-  // What a person does to the cloth: applied at once through the core, in every panel, then
+  // Pointers (input.js) become gestures (gestures.js) on the views below, and a gesture
+  // becomes the actions after them: applied at once through the core, in every panel, then
   // recorded at the current frame (recorder.js). A person acting during a replay takes over.
-  const input = window.clothInput.attach(canvas, {
+  const gestures = window.clothGestures.create({
     // client px -> {panel, x, y} world metres in the panel under the point (panel -1: none)
     locate: function (clientX, clientY) {
       const r = canvas.getBoundingClientRect(), cx = clientX - r.left, cy = clientY - r.top;
@@ -862,7 +863,17 @@
       const pos = state.panels[Math.min(panel, state.panels.length - 1)].cloth.pos;
       return [pos[2 * k], pos[2 * k + 1]];
     },
-    // One cloth: the hand takes hold at (x, y) and goes where the pointer takes it. Compare
+    // Held by someone else: another pointer, or the scene's script (a replay's script lets go
+    // when a person takes over, so its vertices can be grabbed then).
+    isHeld: function (k) { return state.cloth.held[k] !== 0 && (state.replayEnd < 0 || gestures.holds(k)); },
+    bladeOn: function () { return bladeOn; },
+    trail: function (clientX, clientY, start) {
+      const r = canvas.getBoundingClientRect();
+      blade.add(clientX - r.left, clientY - r.top, performance.now(), start);
+      state.trail = true;
+    },
+  }, {
+    // The actions. One cloth: the hand takes hold at (x, y) and goes where the pointer takes it. Compare
     // mode: each panel's hand takes hold of its own vertex where it is (the panels' cloths
     // differ, so one panel's point would move the others' vertex at once, and a tap would
     // fling them) and moves by the pointer's displacement (recorded as a grab with no `to`
@@ -920,10 +931,6 @@
       state.pinEdits[k] = !pinned;
       touched();
     },
-    // Held by someone else: another pointer, or the scene's script (a replay's script lets go
-    // when a person takes over, so its vertices can be grabbed then).
-    isHeld: function (k) { return state.cloth.held[k] !== 0 && (state.replayEnd < 0 || input.holds(k)); },
-    bladeMode: function () { return bladeOn; },
     cut: function (x0, y0, x1, y1) {
       if (x0 === x1 && y0 === y1) return;
       takeOver();
@@ -931,12 +938,8 @@
       recorder.cut(state.frames, x0, y0, x1, y1);
       touched();
     },
-    trail: function (clientX, clientY, start) {
-      const r = canvas.getBoundingClientRect();
-      blade.add(clientX - r.left, clientY - r.top, performance.now(), start);
-      state.trail = true;
-    },
   });
+  window.clothInput.attach(canvas, gestures);
 
   function touched() {
     state.needMeasure = true;
@@ -953,7 +956,7 @@
   function relayout() {
     state.relayouts++;
     layout();
-    input.reproject();
+    gestures.reproject();
     measureOverlays();
     measureCanvas();
     state.dirty = true;
