@@ -106,6 +106,7 @@ window.clothRenderer = (function () {
     let gen = 0;          // bumped when the GL objects are made again (a restored context)
 
     function initGL() {
+      gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
       if (version === 2) {
         inst = {
           divisor: function (i, d) { gl.vertexAttribDivisor(i, d); },
@@ -176,7 +177,6 @@ window.clothRenderer = (function () {
       r.drawCalls = 0;
       if (r.lost || gl.isContextLost()) return;
       gl.viewport(0, 0, canvas.width, canvas.height);
-      gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
       gl.clear(gl.COLOR_BUFFER_BIT);
     };
 
