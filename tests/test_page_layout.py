@@ -36,3 +36,11 @@ def test_input_and_gestures_know_no_other_file():
     users = {name for name in build.SCRIPTS
              if {'clothInput', 'clothGestures'} & globals_of(name)[1]}
     assert users == {'app.js'}
+
+
+def test_the_renderer_never_reads_a_cloth():
+    """It draws a snapshot (clothCore.snapshot); comments and messages may name the cloth,
+    code may not."""
+    with open(os.path.join(WEBGL, 'renderer.js'), encoding='utf-8') as f:
+        code = [re.sub(r"'[^']*'", "''", line.split('//')[0]) for line in f]
+    assert not [line for line in code if re.search(r'\bcloth\b', line)]

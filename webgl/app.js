@@ -39,7 +39,7 @@
   const own = window.clothOptions.own;
 
   // A panel: {cloth, run (runner.js: ops, script index, batch timing), draw (its renderer
-  // panel), simMs, clamped}. state.cloth is the first panel's: the one the readouts, the
+  // panel), snap (what the renderer reads of the cloth: clothCore.snapshot), simMs, clamped}. state.cloth is the first panel's: the one the readouts, the
   // recording's checks and state() describe. state.base is a cloth that follows the scene's
   // settings without the panels' own (never stepped): what the settings panel shows.
   const state = {
@@ -109,7 +109,7 @@
     onLost: function () { ui.error('The WebGL context was lost; waiting for the browser to restore it.', 'context'); },
     onRestored: function () {
       ui.clearError('context');
-      state.panels.forEach(function (p) { p.draw.setScene(p.cloth); });
+      state.panels.forEach(function (p) { p.draw.setScene(core.snapshot(p.cloth, p.snap)); });
       state.dirty = true;
     },
     onError: function (msg) { ui.fatal(msg); },
@@ -177,7 +177,7 @@
     state.compare = Array.isArray(obj.compare) ? obj.compare.map(function (o) { return Object.assign({}, o); }) : [];
     state.panels = cloths.map(function (cloth, i) {
       return { cloth: cloth, run: null, draw: renderer.ok ? renderer.panel(i) : null,
-               simMs: NaN, clamped: 0 };
+               snap: core.snapshot(cloth), simMs: NaN, clamped: 0 };
     });
     state.cloth = cloths[0];
     state.base = base;
@@ -200,7 +200,7 @@
     charts.reset(state.panels.length);
     compareUI.render(state.compare);
     if (renderer.ok) {
-      state.panels.forEach(function (p) { p.draw.setScene(p.cloth); p.draw.setView(state.view); });
+      state.panels.forEach(function (p) { p.draw.setScene(core.snapshot(p.cloth, p.snap)); p.draw.setView(state.view); });
       layout();
     }
     // The pointers that kept a vertex hold it again, where it now is, keeping on with their
@@ -701,7 +701,10 @@
     const t0 = performance.now();
     state.scale = currentScale();
     renderer.begin();
-    for (let i = 0; i < state.panels.length; i++) state.panels[i].draw.draw(state.panels[i].cloth, state.mode, state.scale);
+    for (let i = 0; i < state.panels.length; i++) {
+      const p = state.panels[i];
+      p.draw.draw(core.snapshot(p.cloth, p.snap), state.mode, state.scale);
+    }
     const ms = performance.now() - t0;
     state.renderMs = Number.isFinite(state.renderMs) ? state.renderMs + EMA * (ms - state.renderMs) : ms;
     state.dirty = false;

@@ -55,6 +55,24 @@ window.clothCore = (function (api) {
   };
   // parseScene(sceneJsonText[, panel]) -> the checked scene, nothing built (cloth/api.py
   // check); with a panel index (from 0), the scene of that panel of its `compare` list.
+  // What the renderer draws of a cloth, and all it reads: positions, the edges' ends, one
+  // value per edge (its strain, `diff`) and per vertex (its stress), and the markers' flags.
+  // Views of the core's own arrays, put into `out` (made once per panel: no allocation a
+  // frame) before each draw; a worker hosting the core would post these arrays instead.
+  core.snapshot = function (cloth, out) {
+    out = out || {};
+    out.n_edges = cloth.n_edges;
+    out.n_verts = cloth.n_verts;
+    out.spacing = cloth.spacing;
+    out.pos = cloth.pos;
+    out.edge_a = cloth.edge_a;
+    out.edge_b = cloth.edge_b;
+    out.edge_value = cloth.diff;
+    out.vertex_value = cloth.stress;
+    out.pinned = cloth.pinned;
+    out.held = cloth.held;
+    return out;
+  };
   core.parseScene = wrap(function (text, panel) { return api.check(text, panel === undefined ? -1 : panel); });
 
   // ops(cloth): the per-frame operations (cloth/api.py operations: cloth/sim.py's module

@@ -8,6 +8,9 @@
 // Per frame the arrays are refilled in place and sent with bufferSubData; they are
 // reallocated only when a scene with more edges or vertices arrives.
 //
+// What it draws is a snapshot (clothCore.snapshot): positions, the edges' ends, a value per
+// edge and per vertex, and the markers' flags; it never reads the cloth itself.
+//
 // Panels: one canvas, one or more panels (compare mode runs 2 to 4 cloths side by side),
 // each with its own arrays, its own rectangle of the canvas and its own world -> pixel
 // view. r.begin() clears the canvas; each panel then draws into its rectangle.
@@ -228,9 +231,9 @@ window.clothRenderer = (function () {
       };
 
       // Size the arrays (and GPU buffers) for a scene; only grows.
-      p.setScene = function (cloth) {
+      p.setScene = function (snap) {
         buffers();
-        const ne = cloth.n_edges, nv = cloth.n_verts;
+        const ne = snap.n_edges, nv = snap.n_verts;
         if (ne > edgeCap) {
           edgeCap = ne;
           edgeData = new Float32Array(6 * ne);
@@ -244,7 +247,7 @@ window.clothRenderer = (function () {
           gl.bufferData(gl.ARRAY_BUFFER, markData.byteLength, gl.DYNAMIC_DRAW);
         }
         edgeView = edgeData.subarray(0, 6 * ne);
-        spacing = cloth.spacing > 0 ? cloth.spacing : 1;
+        spacing = snap.spacing > 0 ? snap.spacing : 1;
       };
 
       p.setView = function (b) { view = { x0: b.x0, x1: b.x1, y0: b.y0, y1: b.y1 }; p.fit(); };
@@ -277,17 +280,18 @@ window.clothRenderer = (function () {
         return Math.max(Math.max(0.3, 0.1 * cell) * px, 0.5);
       }
 
-      // The hot path: refill the arrays in place, upload, two draw calls into the
-      // panel's rectangle (after r.begin()).
-      p.draw = function (cloth, mode, scale) {
+      // The hot path: refill the arrays in place from a snapshot (clothCore.snapshot: all
+      // the renderer reads of a cloth), upload, two draw calls into the panel's rectangle
+      // (after r.begin()).
+      p.draw = function (snap, mode, scale) {
         if (r.lost || gl.isContextLost()) return;
         buffers();
-        const ne = Math.min(cloth.n_edges, edgeCap), nv = Math.min(cloth.n_verts, markCap);
-        const pos = cloth.pos, ea = cloth.edge_a, eb = cloth.edge_b;
+        const ne = Math.min(snap.n_edges, edgeCap), nv = Math.min(snap.n_verts, markCap);
+        const pos = snap.pos, ea = snap.edge_a, eb = snap.edge_b;
         const ed = edgeData;
         const stressMode = mode === 'stress';
         if (stressMode) {
-          const q = cloth.stress;
+          const q = snap.vertex_value;
           for (let e = 0, o = 0; e < ne; e++, o += 6) {
             const a = ea[e], b = eb[e];
             ed[o] = pos[2 * a]; ed[o + 1] = pos[2 * a + 1];
@@ -295,7 +299,7 @@ window.clothRenderer = (function () {
             ed[o + 4] = q[a]; ed[o + 5] = q[b];
           }
         } else {
-          const diff = cloth.diff;
+          const diff = snap.edge_value;
           for (let e = 0, o = 0; e < ne; e++, o += 6) {
             const a = ea[e], b = eb[e];
             const v = Math.abs(diff[e]);
@@ -304,7 +308,7 @@ window.clothRenderer = (function () {
             ed[o + 4] = v; ed[o + 5] = v;
           }
         }
-        const pinned = cloth.pinned, held = cloth.held, md = markData;
+        const pinned = snap.pinned, held = snap.held, md = markData;
         let nMarks = 0;
         for (let k = 0; k < nv; k++) {
           const pk = pinned[k], h = held[k];
