@@ -43,6 +43,28 @@ def bytes_under(node, name, inside=False):
     return (node['selfSize'] if inside else 0) + sum(bytes_under(c, name, inside) for c in node['children'])
 
 
+def steady_bytes_per_frame(cdp, advance, frames, name, limit, windows=4):
+    """Bytes a frame that the page's code under function `name` allocates, garbage included
+    (the profile keeps the samples of objects collected since: without that, a list made every
+    frame went unseen), over successive windows of `frames` frames (`advance(n)` runs them)
+    until one is within `limit`. A per-frame allocation shows in every window; V8 finishing its
+    optimisation shows in one (measured 2026-12-04: a late deoptimisation of `solve_lines` or
+    `project_cells` on a branch first taken then, "insufficient type feedback", about 10 kB
+    once between frames 3000 and 6000). Returns every window's figure."""
+    cdp.send('HeapProfiler.enable')
+    per_frame = []
+    for _ in range(windows):
+        cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256,
+                                                'includeObjectsCollectedByMajorGC': True,
+                                                'includeObjectsCollectedByMinorGC': True})
+        advance(frames)
+        profile = cdp.send('HeapProfiler.stopSampling')['profile']
+        per_frame.append(bytes_under(profile['head'], name) / frames)
+        if per_frame[-1] < limit:
+            break
+    return per_frame
+
+
 def load_paused(pg, text):
     """Load a scene and pause in one task: no animation frame runs between them (from two
     calls, a loaded machine ran frames in the gap, and a test's frame numbers drifted)."""

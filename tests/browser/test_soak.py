@@ -12,7 +12,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from conftest import DIST
-from browser_helpers import bytes_under
+from browser_helpers import bytes_under, steady_bytes_per_frame
 
 SOAK_FRAMES = int(os.environ.get('CLOTH_SOAK_FRAMES', '10000'))
 BATCH = 1000
@@ -84,21 +84,24 @@ def test_hot_path_allocates_nothing_per_frame(app):
     page, cdp, _ = app
     page.evaluate('clothApp.advance(3000)')           # warm: until every kernel is optimised
     frames = 3000
-    cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256})
+    cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256,
+                                            'includeObjectsCollectedByMajorGC': True,
+                                            'includeObjectsCollectedByMinorGC': True})
     page.evaluate('(n) => clothApp.advance(n)', frames)
     profile = cdp.send('HeapProfiler.stopSampling')['profile']
     total = sampled_bytes(profile['head'])
-    # One advance() call (the evaluate itself, one measure and one render) may allocate a few
-    # KB; an allocation in the per-frame path would be frames x its size.
+    # Garbage included. One advance() call (the evaluate itself, one measure and one render)
+    # may allocate a few KB; an allocation in the per-frame path would be frames x its size.
     assert total / frames < 8, 'about %.1f bytes allocated per frame' % (total / frames)
 
 
 def test_a_moving_cloth_allocates_nothing_per_frame(app):
     """The solver's whole path (tethers, cells, sweeps, line solves, the tear check) on a cloth
-    that never rests (no damping, no sleep, swinging after a throw): the test above times a curtain
-    that falls asleep and so steps nothing. A double passed to a kernel that is not inlined
-    was a fresh heap number per call (about 50 bytes a frame through the line solves) until
-    the kernels read their constants from a typed array (solve.K_*)."""
+    that never rests (no damping, no sleep, swinging after a throw), garbage included
+    (`steady_bytes_per_frame`): the test above times a curtain that falls asleep and so steps
+    nothing. A double passed to a kernel that is not inlined was a fresh heap number per call
+    (about 50 bytes a frame through the line solves) until the kernels read their constants
+    from a typed array (solve.K_*)."""
     page, cdp, _ = app
     page.evaluate('''() => {
         const pins = []; for (let c = 0; c < 40; c += 3) pins.push(c); pins.push(39);
@@ -107,13 +110,10 @@ def test_a_moving_cloth_allocates_nothing_per_frame(app):
         const ops = clothCore.ops(clothApp.cloth());
         ops.grab(1170, 1.5, -1.5); ops.release(1170);
         clothApp.advance(3000); }''')
-    frames = 2000
-    cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256})
-    page.evaluate('(n) => clothApp.advance(n)', frames)
-    profile = cdp.send('HeapProfiler.stopSampling')['profile']
+    per_frame = steady_bytes_per_frame(cdp, lambda n: page.evaluate('(n) => clothApp.advance(n)', n),
+                                       2000, 'advance', 2)
     assert not page.evaluate('clothApp.cloth().asleep')
-    total = bytes_under(profile['head'], 'advance')
-    assert total / frames < 2, 'about %.1f bytes allocated per frame' % (total / frames)
+    assert per_frame[-1] < 2, 'bytes allocated per frame, window by window: %s' % per_frame
 
 
 @st.composite

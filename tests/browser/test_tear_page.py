@@ -9,7 +9,7 @@ import sys
 
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-from browser_helpers import ROOT, bytes_under, load_paused
+from browser_helpers import ROOT, load_paused, steady_bytes_per_frame
 
 SMALL = {'cols': 14, 'rows': 10, 'spacing': 0.1, 'pins': [0, 4, 9, 13], 'damping': 1}
 
@@ -230,14 +230,9 @@ def test_random_blades_through_the_pointer_path(open_page, script, tear):
 
 def test_a_torn_cloth_allocates_nothing_per_frame(open_page):
     """After its first break a cloth has its bookkeeping (links, cells, pieces) for good: the
-    frames of a torn cloth, with the tear check on, allocate nothing, garbage included (the
-    profile keeps the samples of objects collected since). Measured in the page's stepping
-    (`simulate`; a draw after new breaks lays out the edges anew) over successive windows of
-    frames after a warm-up, one of which must be clean: an allocation per frame shows in every
-    window (a two-element list made each frame: 60-150 bytes a frame in all four), while V8
-    finishing its optimisation shows in one (measured 2026-12-04: between frames 3000 and 6000
-    of this scene `solve_lines` or `project_cells` was deoptimised once, "insufficient type
-    feedback" on a branch a torn cloth first takes then, about 10 kB, and nothing after)."""
+    frames of a torn cloth, with the tear check on, allocate nothing, garbage included
+    (`steady_bytes_per_frame`; a list made every frame shows at 60-150 bytes a frame). Measured
+    in the page's stepping (`simulate`): a draw after new breaks lays out the edges anew."""
     pg = open_page()
     load(pg, cols=40, rows=30, tear=0.5, pins=list(range(0, 40, 3)) + [39])
     a = screen_between(pg, 10 * 40 + 3, 11 * 40 + 3)
@@ -245,18 +240,8 @@ def test_a_torn_cloth_allocates_nothing_per_frame(open_page):
     stroke(pg, [a, b])
     pg.js('clothApp.advance(3000)')        # warm: until every kernel is optimised (as test_soak)
     cdp = pg.context.new_cdp_session(pg.page)
-    cdp.send('HeapProfiler.enable')
-    frames = 2000
-    per_frame = []
-    for window in range(4):
-        cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256,
-                                                'includeObjectsCollectedByMajorGC': True,
-                                                'includeObjectsCollectedByMinorGC': True})
-        pg.js('(n) => clothApp.advance(n)', frames)
-        profile = cdp.send('HeapProfiler.stopSampling')['profile']
-        per_frame.append(bytes_under(profile['head'], 'simulate') / frames)
-        if per_frame[-1] < 2:
-            break
+    per_frame = steady_bytes_per_frame(cdp, lambda n: pg.js('(n) => clothApp.advance(n)', n),
+                                       2000, 'simulate', 2)
 
     assert pg.info()['broken'] > 0
     assert per_frame[-1] < 2, per_frame
