@@ -39,9 +39,10 @@
   const own = window.clothOptions.own;
 
   // A panel: {cloth, run (runner.js: ops, script index, batch timing), draw (its renderer
-  // panel), snap (what the renderer reads of the cloth: clothCore.snapshot), simMs, clamped}. state.cloth is the first panel's: the one the readouts, the
-  // recording's checks and state() describe. state.base is a cloth that follows the scene's
-  // settings without the panels' own (never stepped): what the settings panel shows.
+  // panel), snap (what the renderer reads of the cloth: clothCore.snapshot), simMs,
+  // clamped}. state.cloth is the first panel's: the one the readouts, the recording's checks
+  // and state() describe. state.base is a cloth that follows the scene's settings without the
+  // panels' own (never stepped): what the settings panel shows.
   const state = {
     panels: [], cloth: null, base: null, sceneText: '', sceneObj: null, view: null,
     preset: 'curtain', params: null, compare: [],
@@ -200,7 +201,10 @@
     charts.reset(state.panels.length);
     compareUI.render(state.compare);
     if (renderer.ok) {
-      state.panels.forEach(function (p) { p.draw.setScene(core.snapshot(p.cloth, p.snap)); p.draw.setView(state.view); });
+      state.panels.forEach(function (p) {
+        p.draw.setScene(core.snapshot(p.cloth, p.snap));
+        p.draw.setView(state.view);
+      });
       layout();
     }
     // The pointers that kept a vertex hold it again, where it now is, keeping on with their
