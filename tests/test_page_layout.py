@@ -5,8 +5,7 @@ import os
 import re
 
 import build
-
-WEBGL = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'webgl')
+from build import WEBGL
 
 
 def globals_of(name):

@@ -43,6 +43,12 @@ def bytes_under(node, name, inside=False):
     return (node['selfSize'] if inside else 0) + sum(bytes_under(c, name, inside) for c in node['children'])
 
 
+# A sampling heap profile that keeps the samples of objects collected since (garbage), not only
+# of those still alive when it stops.
+GARBAGE_TOO = {'samplingInterval': 256, 'includeObjectsCollectedByMajorGC': True,
+               'includeObjectsCollectedByMinorGC': True}
+
+
 def steady_bytes_per_frame(cdp, advance, frames, name, limit, windows=4):
     """Bytes a frame that the page's code under function `name` allocates, garbage included
     (the profile keeps the samples of objects collected since: without that, a list made every
@@ -54,9 +60,7 @@ def steady_bytes_per_frame(cdp, advance, frames, name, limit, windows=4):
     cdp.send('HeapProfiler.enable')
     per_frame = []
     for _ in range(windows):
-        cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256,
-                                                'includeObjectsCollectedByMajorGC': True,
-                                                'includeObjectsCollectedByMinorGC': True})
+        cdp.send('HeapProfiler.startSampling', GARBAGE_TOO)
         advance(frames)
         profile = cdp.send('HeapProfiler.stopSampling')['profile']
         per_frame.append(bytes_under(profile['head'], name) / frames)

@@ -12,7 +12,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from conftest import DIST
-from browser_helpers import bytes_under, steady_bytes_per_frame
+from browser_helpers import GARBAGE_TOO, bytes_under, steady_bytes_per_frame
 
 SOAK_FRAMES = int(os.environ.get('CLOTH_SOAK_FRAMES', '10000'))
 BATCH = 1000
@@ -84,9 +84,7 @@ def test_hot_path_allocates_nothing_per_frame(app):
     page, cdp, _ = app
     page.evaluate('clothApp.advance(3000)')           # warm: until every kernel is optimised
     frames = 3000
-    cdp.send('HeapProfiler.startSampling', {'samplingInterval': 256,
-                                            'includeObjectsCollectedByMajorGC': True,
-                                            'includeObjectsCollectedByMinorGC': True})
+    cdp.send('HeapProfiler.startSampling', GARBAGE_TOO)
     page.evaluate('(n) => clothApp.advance(n)', frames)
     profile = cdp.send('HeapProfiler.stopSampling')['profile']
     total = sampled_bytes(profile['head'])
