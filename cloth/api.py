@@ -6,8 +6,9 @@ returns, and the parity tests compare its CPython and browser results number for
 
 from cloth.host import to_json, kind_of, is_finite, parse_json
 from cloth.scene import (parse_scene, settings_scene, SceneError, fail, MAX_FRAMES, MATERIALS,
-                         DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large)
-from cloth.sim import Cloth, frame, measure, grab, move, move_by, release, pin, unpin, retune, cut, \
+                         DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large, KEYS, SOLVERS,
+                         DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES)
+from cloth.sim import Cloth, count_edges, frame, measure, grab, move, move_by, release, pin, unpin, retune, cut, \
     nearest
 from cloth.solve import mark_overstretched
 
@@ -36,6 +37,20 @@ def materials():
     """The named fabrics of the page's Material control (scene.MATERIALS: name, label,
     density kg/m^2, stiffness N/m) and the presets' own, declared once for both runtimes."""
     return [MATERIALS, DEFAULT_MATERIAL]
+
+
+def schema():
+    """The scene's keys as scene.KEYS declares them (each a Key: kind, range and its words,
+    label, unit, live, panel, defaults, the page's field range), and the limits and names the
+    page's other parts check against: [keys, solvers, default solver, action ops, most actions,
+    most panels, most vertices]. The page derives its fields, the compare editor and the
+    recorder from these, so that a key is declared once."""
+    return [KEYS, SOLVERS, DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES]
+
+
+def edges_of(cols, rows, shear):
+    """How many edges such a grid has (sim.count_edges): the page's cost estimate."""
+    return count_edges(cols, rows, shear)
 
 
 def operations():

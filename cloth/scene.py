@@ -25,26 +25,124 @@ MAX_DEPTH = 32
 SOLVERS = ['jakobsen', 'xpbd']
 DEFAULT_SOLVER = 'xpbd'
 OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut']
+MAX_TEAR = 1e6
+MAX_PANELS = 4
 
-SCENE_KEYS = ['cols', 'rows', 'spacing', 'pins', 'gravity', 'dt', 'substeps', 'iterations',
-              'damping', 'solver', 'actions', 'tethers', 'shear', 'compliance', 'tolerance',
-              'max_speed', 'sleep', 'cells', 'lines', 'name', 'frames', 'compare', 'tear',
-              'density']
+
+class Key:
+    """One scene key, declared once: the parser checks it by this, its messages word its
+    range with `words`, the page's fields and the compare editor take their label, unit and
+    range from it (`field_lo`, `field_hi`: what a person types in the page, within the core's
+    own; `step`: an arrow key's step), `live` says a `set` may change it on a running cloth, and
+    `panel` that a compare panel may have its own (2: shown at once in the editor, 1: under
+    "more"). The default is `fallback`, or `by_solver[i]` for SOLVERS[i] where it differs per
+    solver. Attributes avoid the names Transcrypt renames (name, default, type, ...)."""
+
+    def __init__(self, key, kind, lo, hi, lo_open, words, label, unit, live, panel, fallback,
+                 by_solver, field_lo, field_hi, step):
+        self.key = key
+        self.kind = kind           # 'int', 'number', 'bool', 'choice', or a key's own kind
+        self.lo = lo
+        self.hi = hi
+        self.lo_open = lo_open
+        self.words = words
+        self.label = label
+        self.unit = unit
+        self.live = live
+        self.panel = panel
+        self.fallback = fallback
+        self.by_solver = by_solver
+        self.field_lo = field_lo
+        self.field_hi = field_hi
+        self.step = step
+
+
+# Every key a scene may have. The order is the one messages list them in.
+#   key  kind  lo  hi  lo_open  words  label  unit  live  panel  default  per solver
+#   (jakobsen, xpbd)  page field lo, hi, step
+KEYS = [
+    Key('cols', 'int', 1, MAX_VERTICES, False, 'an integer from 1 to 1000000', 'Columns', '',
+        False, 0, None, None, 1, 200, 1),
+    Key('rows', 'int', 1, MAX_VERTICES, False, 'an integer from 1 to 1000000', 'Rows', '',
+        False, 0, None, None, 1, 200, 1),
+    Key('spacing', 'number', 1e-4, 1e4, False, 'from 0.0001 to 10000 metres', 'Spacing', 'm',
+        False, 0, None, None, 1e-4, 1e4, 0.01),
+    Key('pins', 'pins', 0, 0, False, '', 'Pins', '', False, 0, None, None, 0, 0, 0),
+    # The page's Gravity field is its y component.
+    Key('gravity', 'point', -1e5, 1e5, False, 'at most 1e5 m/s^2 per axis', 'Gravity',
+        'm/s\u00b2', True, 0, [0.0, -9.81], None, -100, 100, 0.1),
+    # Not down to 0: a step's h^2 must stay a normal double (dt 1e-300 made it 0, and
+    # compliance / h^2 a division by zero); a microsecond is far below any frame.
+    Key('dt', 'number', MIN_DT, 1.0, False, 'from 0.000001 to 1 seconds', 'Frame time', 's',
+        True, 0, 1.0 / 60.0, None, MIN_DT, 1.0, 0.001),
+    Key('substeps', 'int', 1, MAX_SUBSTEPS, False, 'an integer from 1 to 1000', 'Substeps', '',
+        True, 2, None, [1, 8], 1, 16, 1),
+    Key('iterations', 'int', 0, MAX_ITERATIONS, False, 'an integer from 0 to 10000',
+        'Iterations', '', True, 2, None, [20, 1], 0, 200, 1),
+    Key('damping', 'number', 0.0, 1000.0, False, 'from 0 to 1000 per second', 'Damping', '1/s',
+        True, 2, 0.0, None, 0, 100, 0.1),
+    Key('solver', 'choice', 0, 0, False, '', 'Solver', '', True, 2, None, None, 0, 0, 0),
+    Key('actions', 'actions', 0, 0, False, '', 'Actions', '', False, 0, None, None, 0, 0, 0),
+    Key('tethers', 'bool', 0, 0, False, '', 'Tethers', '', True, 1, None, [False, True],
+        0, 0, 0),
+    Key('shear', 'bool', 0, 0, False, '', 'Shear', '', False, 1, False, None, 0, 0, 0),
+    Key('compliance', 'number', 0.0, 1e3, False, 'from 0 to 1000 m/N', 'Compliance', 'm/N',
+        True, 1, 0.0, None, 0, 1000, 1e-4),
+    Key('tolerance', 'number', 0.0, 1.0, False, 'from 0 to 1 (a relative strain)', 'Tolerance',
+        '', True, 1, None, [0.0, 1e-4], 0, 1, 1e-4),
+    Key('max_speed', 'number', 0.0, 1e6, True, 'in (0, 1000000] m/s', 'Max speed', 'm/s',
+        True, 1, 1000.0, None, 1e-3, 1e6, 1),
+    Key('sleep', 'bool', 0, 0, False, '', 'Sleep', '', True, 1, None, [False, True], 0, 0, 0),
+    Key('cells', 'bool', 0, 0, False, '', 'Cells', '', True, 1, None, [False, True], 0, 0, 0),
+    Key('lines', 'bool', 0, 0, False, '', 'Lines', '', True, 1, None, [False, True], 0, 0, 0),
+    Key('name', 'string', 0, 0, False, '', 'Name', '', False, 0, None, None, 0, 0, 0),
+    Key('frames', 'int', 0, MAX_FRAMES, False,
+        'an integer from 0 to 10000000 (the frames the scene was recorded for)', 'Frames', '',
+        False, 0, -1, None, 0, 0, 0),
+    Key('compare', 'compare', 0, 0, False, '', 'Compare', '', False, 0, None, None, 0, 0, 0),
+    # The strain past which an edge breaks; null or omitted: no tearing (0 in a Scene). The
+    # page's field takes empty, `off` or 0 for none.
+    Key('tear', 'number', 0.0, MAX_TEAR, True,
+        'a strain greater than 0 (an edge breaks once (length - rest) / rest exceeds it), or '
+        'null for no tearing', 'Tear', 'strain', True, 1, 0.0, None, 0.01, 100, 0.01),
+    # kg/m^2: a vertex stands for a cell of spacing^2 of cloth. Without it every vertex weighs
+    # 1 kg, as before the key existed (the scenes and recordings made then mean what they
+    # meant).
+    Key('density', 'number', 0.0, 1e4, True, 'in (0, 10000] kg/m^2 (the cloth\'s mass per area)',
+        'Density', 'kg/m\u00b2', True, 1, 0.0, None, 0.001, 100, 0.01),
+]
+
+
+def spec(key):
+    """The Key declared for `key`."""
+    for i in range(len(KEYS)):
+        if KEYS[i].key == key:
+            return KEYS[i]
+    raise SceneError(key + ': not a scene key')
+
+
+def keys_where(what):
+    """The names of the keys that are `live` ('live') or a panel's own ('panel')."""
+    out = []
+    for i in range(len(KEYS)):
+        k = KEYS[i]
+        if (what == 'live' and k.live) or (what == 'panel' and k.panel > 0):
+            out.append(k.key)
+    return out
+
+
+SCENE_KEYS = [k.key for k in KEYS]
 ACTION_KEYS = ['frame', 'op', 'vertex', 'to', 'by', 'scene', 'from']
 # The keys a `set` action may change on the running cloth: everything but what makes the grid
 # (cols, rows, spacing, shear, pins) and what is not physics (actions, frames, name).
-SETTABLE = ['gravity', 'dt', 'substeps', 'iterations', 'damping', 'solver', 'tethers',
-            'compliance', 'tolerance', 'max_speed', 'sleep', 'cells', 'lines', 'tear', 'density']
+SETTABLE = keys_where('live')
 # What the settings of a `set` are merged into: the scene's own keys but these, which a set
 # can neither change nor needs (actions would be parsed again at every set).
 NOT_SETTINGS = ['actions', 'pins', 'frames', 'name', 'compare']
 # `compare`: the page's compare mode, 2 to MAX_PANELS panels that run the scene side by side
 # under the same hands, each with some of these keys of its own. The physics ignores it but
 # for the panel a run asks for (parse_scene's `panel`).
-COMPARE_KEYS = ['solver', 'substeps', 'iterations', 'tethers', 'tolerance', 'compliance',
-                'shear', 'damping', 'cells', 'lines', 'sleep', 'max_speed', 'tear', 'density']
-MAX_TEAR = 1e6
-MAX_PANELS = 4
+COMPARE_KEYS = keys_where('panel')
 # Every scene that comes in (a link, a file opened or dropped, the Scene JSON box, the CLI) is
 # refused past this many bytes of UTF-8 JSON, counted while it is read or inflated, before
 # anything is parsed: the largest recording the page makes (MAX_ACTIONS actions) is about
@@ -93,15 +191,20 @@ def shown(text):
     return ''.join(out)
 
 
-# Each solver's defaults for the keys a scene may omit. "jakobsen" is the seed's method
-# exactly: one step of `iterations` Gauss-Seidel sweeps, no extras. "xpbd" is the best
-# configuration the benchmark found (see README): small steps plus long-range tethers.
 def solver_defaults(solver):
-    if solver == 'jakobsen':
-        return {'substeps': 1, 'iterations': 20, 'tethers': False, 'tolerance': 0.0,
-                'sleep': False, 'cells': False, 'lines': False}
-    return {'substeps': 8, 'iterations': 1, 'tethers': True, 'tolerance': 1e-4, 'sleep': True,
-            'cells': True, 'lines': True}
+    """Each solver's defaults for the keys a scene may omit (the Keys' `by_solver`).
+    "jakobsen" is the seed's method exactly: one step of `iterations` Gauss-Seidel sweeps, no
+    extras. "xpbd" is the best configuration the benchmark found (see README): small steps
+    plus long-range tethers, cells and line solves."""
+    which = 0
+    for i in range(len(SOLVERS)):
+        if SOLVERS[i] == solver:
+            which = i
+    out = {}
+    for i in range(len(KEYS)):
+        if KEYS[i].by_solver is not None:
+            out[KEYS[i].key] = KEYS[i].by_solver[which]
+    return out
 
 
 class Scene:
@@ -112,26 +215,28 @@ class Scene:
         self.rows = 1
         self.spacing = 1.0
         self.pins = []
-        self.gravity_x = 0.0
-        self.gravity_y = -9.81
-        self.dt = 1.0 / 60.0
-        self.substeps = 1
-        self.iterations = 20
-        self.damping = 0.0
-        self.max_speed = 1000.0
+        gravity = spec('gravity').fallback
+        self.gravity_x = gravity[0]
+        self.gravity_y = gravity[1]
+        self.dt = spec('dt').fallback
+        self.damping = spec('damping').fallback
+        self.max_speed = spec('max_speed').fallback
         self.solver = DEFAULT_SOLVER
-        self.tethers = False
-        self.shear = False
-        self.compliance = 0.0
-        self.tolerance = 0.0
-        self.sleep = False
-        self.cells = False
-        self.lines = False
-        self.tear = 0.0        # the strain past which an edge breaks; 0: no tearing
+        by_solver = solver_defaults(DEFAULT_SOLVER)
+        self.substeps = by_solver['substeps']
+        self.iterations = by_solver['iterations']
+        self.tethers = by_solver['tethers']
+        self.tolerance = by_solver['tolerance']
+        self.sleep = by_solver['sleep']
+        self.cells = by_solver['cells']
+        self.lines = by_solver['lines']
+        self.shear = spec('shear').fallback
+        self.compliance = spec('compliance').fallback
+        self.tear = spec('tear').fallback        # the strain past which an edge breaks; 0: none
         self.mass = 1.0        # kg a vertex: density * spacing^2, or 1 kg without a density
-        self.density = 0.0     # kg/m^2 as the scene gave it; 0: none (1 kg a vertex)
+        self.density = spec('density').fallback  # kg/m^2 as given; 0: none (1 kg a vertex)
         self.actions = []      # list of Action, sorted by frame (stable)
-        self.frames = -1       # the frames a recording ran for; -1: not given
+        self.frames = spec('frames').fallback    # the frames a recording ran for; -1: not given
         # The scene's JSON object without NOT_SETTINGS: what a `set` action merges its keys
         # into, so that a set means "this scene with these keys written into it" (solver
         # defaults included: a scene that omits `tethers` and is set to "jakobsen" gets
@@ -178,6 +283,27 @@ def boolean(value, key):
     if kind_of(value) != 'bool':
         fail(key + ': must be true or false')
     return value
+
+
+def off(k):
+    """Whether the Key's 0 means "none" (tearing, a density): it then takes null for none too,
+    and the page's field takes empty or `off`."""
+    return k.kind == 'number' and k.lo_open and k.fallback == 0.0
+
+
+def read(obj, key, otherwise):
+    """obj[key] checked against its Key (an 'int', 'number' or 'bool'), or `otherwise` when
+    the scene omits it (or gives null for a key whose 0 means none)."""
+    if not has_key(obj, key):
+        return otherwise
+    k = spec(key)
+    if obj[key] is None and off(k):
+        return otherwise
+    if k.kind == 'int':
+        return integer(obj[key], key, k.lo, k.hi, k.words)
+    if k.kind == 'number':
+        return number(obj[key], key, k.lo, k.hi, k.lo_open, k.words)
+    return boolean(obj[key], key)
 
 
 def point(value, key):
@@ -257,12 +383,11 @@ def scene_from_object(obj):
         fail('rows: missing (an integer >= 1)')
     if not has_key(obj, 'spacing'):
         fail('spacing: missing (the rest length in metres, > 0)')
-    s.cols = integer(obj['cols'], 'cols', 1, MAX_VERTICES, 'an integer from 1 to 1000000')
-    s.rows = integer(obj['rows'], 'rows', 1, MAX_VERTICES, 'an integer from 1 to 1000000')
+    s.cols = read(obj, 'cols', 0)
+    s.rows = read(obj, 'rows', 0)
     if s.cols * s.rows > MAX_VERTICES:
         fail('cols: cols * rows must be at most 1000000 vertices (the grid is too large)')
-    s.spacing = number(obj['spacing'], 'spacing', 1e-4, 1e4, False,
-                       'from 0.0001 to 10000 metres')
+    s.spacing = read(obj, 'spacing', 0.0)
     n = s.cols * s.rows
 
     if has_key(obj, 'solver'):
@@ -270,13 +395,6 @@ def scene_from_object(obj):
             fail('solver: must be one of ' + ', '.join(SOLVERS))
         s.solver = obj['solver']
     defaults = solver_defaults(s.solver)
-    s.substeps = defaults['substeps']
-    s.iterations = defaults['iterations']
-    s.tethers = defaults['tethers']
-    s.tolerance = defaults['tolerance']
-    s.sleep = defaults['sleep']
-    s.cells = defaults['cells']
-    s.lines = defaults['lines']
 
     if has_key(obj, 'pins'):
         pins = obj['pins']
@@ -289,60 +407,33 @@ def scene_from_object(obj):
         g = obj['gravity']
         if kind_of(g) != 'list' or len(g) != 2:
             fail('gravity: must be a list of two numbers [gx, gy] in m/s^2')
-        s.gravity_x = number(g[0], 'gravity', -1e5, 1e5, False, 'at most 1e5 m/s^2 per axis')
-        s.gravity_y = number(g[1], 'gravity', -1e5, 1e5, False, 'at most 1e5 m/s^2 per axis')
-    if has_key(obj, 'dt'):
-        # Not down to 0: a step's h^2 must stay a normal double (dt 1e-300 made it 0, and
-        # compliance / h^2 a division by zero); a microsecond is far below any frame.
-        s.dt = number(obj['dt'], 'dt', MIN_DT, 1.0, False, 'from 0.000001 to 1 seconds')
-    if has_key(obj, 'substeps'):
-        s.substeps = integer(obj['substeps'], 'substeps', 1, MAX_SUBSTEPS,
-                             'an integer from 1 to 1000')
-    if has_key(obj, 'iterations'):
-        s.iterations = integer(obj['iterations'], 'iterations', 0, MAX_ITERATIONS,
-                               'an integer from 0 to 10000')
-    if has_key(obj, 'damping'):
-        s.damping = number(obj['damping'], 'damping', 0.0, 1000.0, False,
-                           'from 0 to 1000 per second')
-    if has_key(obj, 'max_speed'):
-        s.max_speed = number(obj['max_speed'], 'max_speed', 0.0, 1e6, True,
-                             'in (0, 1000000] m/s')
-    if has_key(obj, 'tethers'):
-        s.tethers = boolean(obj['tethers'], 'tethers')
-    if has_key(obj, 'shear'):
-        s.shear = boolean(obj['shear'], 'shear')
-    if has_key(obj, 'sleep'):
-        s.sleep = boolean(obj['sleep'], 'sleep')
-    if has_key(obj, 'cells'):
-        s.cells = boolean(obj['cells'], 'cells')
-    if has_key(obj, 'lines'):
-        s.lines = boolean(obj['lines'], 'lines')
-    if has_key(obj, 'compliance'):
-        s.compliance = number(obj['compliance'], 'compliance', 0.0, 1e3, False,
-                              'from 0 to 1000 m/N')
-    if has_key(obj, 'tolerance'):
-        s.tolerance = number(obj['tolerance'], 'tolerance', 0.0, 1.0, False,
-                             'from 0 to 1 (a relative strain)')
-    if has_key(obj, 'density'):
-        # kg/m^2: a vertex stands for a cell of spacing^2 of cloth. Without it every vertex
-        # weighs 1 kg, as before the key existed (the scenes and recordings made then mean
-        # what they meant).
-        density = number(obj['density'], 'density', 0.0, 1e4, True,
-                         'in (0, 10000] kg/m^2 (the cloth\'s mass per area)')
-        s.density = density
-        s.mass = density * s.spacing * s.spacing
+        k = spec('gravity')
+        s.gravity_x = number(g[0], 'gravity', k.lo, k.hi, False, k.words)
+        s.gravity_y = number(g[1], 'gravity', k.lo, k.hi, False, k.words)
+    # In the order the keys were checked before the schema, so that a scene with several bad
+    # keys is told of the same one first.
+    s.dt = read(obj, 'dt', s.dt)
+    s.substeps = read(obj, 'substeps', defaults['substeps'])
+    s.iterations = read(obj, 'iterations', defaults['iterations'])
+    s.damping = read(obj, 'damping', s.damping)
+    s.max_speed = read(obj, 'max_speed', s.max_speed)
+    s.tethers = read(obj, 'tethers', defaults['tethers'])
+    s.shear = read(obj, 'shear', s.shear)
+    s.sleep = read(obj, 'sleep', defaults['sleep'])
+    s.cells = read(obj, 'cells', defaults['cells'])
+    s.lines = read(obj, 'lines', defaults['lines'])
+    s.compliance = read(obj, 'compliance', s.compliance)
+    s.tolerance = read(obj, 'tolerance', defaults['tolerance'])
+    s.density = read(obj, 'density', s.density)
+    if s.density > 0.0:
+        s.mass = s.density * s.spacing * s.spacing
         if s.mass < 1e-12:
             fail('density: density * spacing^2 (a vertex\'s mass) must be at least 1e-12 kg')
     if has_key(obj, 'name'):
         if kind_of(obj['name']) != 'string':
             fail('name: must be a string')
-    if has_key(obj, 'tear') and obj['tear'] is not None:
-        s.tear = number(obj['tear'], 'tear', 0.0, MAX_TEAR, True,
-                        'a strain greater than 0 (an edge breaks once (length - rest) / rest '
-                        'exceeds it), or null for no tearing')
-    if has_key(obj, 'frames'):
-        s.frames = integer(obj['frames'], 'frames', 0, MAX_FRAMES,
-                           'an integer from 0 to 10000000 (the frames the scene was recorded for)')
+    s.tear = read(obj, 'tear', s.tear)
+    s.frames = read(obj, 'frames', s.frames)
     if has_key(obj, 'compare'):
         parse_compare(obj['compare'], obj)
     s.settings = copy_object(obj, NOT_SETTINGS, None)

@@ -95,6 +95,15 @@ LET_GO_SLACK = 0.5
 LET_GO_STRAIN = 0.05
 
 
+def count_edges(cols, rows, shear):
+    """The edges a grid has before any breaks: its horizontal and vertical links, and one
+    diagonal a cell with `shear` (the page's cost estimate counts them the same way)."""
+    m = (cols - 1) * rows + cols * (rows - 1)
+    if shear:
+        m += (cols - 1) * (rows - 1)
+    return m
+
+
 class Cloth:
     def __init__(self, scene):
         self.scene = scene
@@ -213,9 +222,7 @@ class Cloth:
         cols = self.cols
         rows = self.rows
         h = self.spacing
-        m = (cols - 1) * rows + cols * (rows - 1)
-        if shear:
-            m += (cols - 1) * (rows - 1)
+        m = count_edges(cols, rows, shear)
         self.n_edges = m
         self.edge_a = i32(m)
         self.edge_b = i32(m)

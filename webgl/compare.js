@@ -8,15 +8,37 @@
 'use strict';
 
 window.clothCompare = (function () {
-  const MAX_PANELS = 4;
+  const SCHEMA = window.clothCore.schema();
+  const MAX_PANELS = SCHEMA.maxPanels;      // cloth/scene.py MAX_PANELS
   const GAP = 4;        // CSS px between panels
   // The one-click pair: the seed's method against the default, each spelled out so that a
   // scene that set its own solver does not make them the same.
-  const SEED_VS_DEFAULT = [{ solver: 'jakobsen', substeps: 1, iterations: 20 },
-                           { solver: 'xpbd', substeps: 8, iterations: 1 }];
-  // The editor's number fields (cloth/scene.py COMPARE_KEYS has a few more for scenes) take
-  // their ranges, labels and the reading of what is typed from the panel's (scenes.js).
+  const SEED_VS_DEFAULT = ['jakobsen', SCHEMA.defaultSolver].map(function (name) {
+    const d = window.clothScenes.SOLVERS[name];
+    return { solver: name, substeps: d.substeps, iterations: d.iterations };
+  });
+  // The editor's fields: every key a panel may have of its own (cloth/scene.py Keys with a
+  // `panel`: 2 shown at once, 1 under "more"), the choices first. Number fields take their
+  // ranges, labels and the reading of what is typed from the panel's (scenes.js LIMITS).
   const LIMITS = window.clothScenes.LIMITS;
+  function isChoice(key) { const k = SCHEMA.keys[key].kind; return k === 'choice' || k === 'bool'; }
+  function panelKeys(level) {
+    const keys = SCHEMA.order.filter(function (key) { return SCHEMA.keys[key].panel === level; });
+    return keys.filter(isChoice).concat(keys.filter(function (key) { return !isChoice(key); }));
+  }
+  const MAIN_KEYS = panelKeys(2), MORE_KEYS = panelKeys(1);
+  // A choice's options: [value, shown]; '' is the scene's (or, where the solver decides, the
+  // solver's) own.
+  function optionsOf(key) {
+    const k = SCHEMA.keys[key];
+    const own = ['', k.bySolver ? 'solver\'s' : 'scene\'s'];
+    if (key === 'solver') {
+      return [own].concat(SCHEMA.solvers.map(function (name) {
+        return [name, window.clothScenes.SOLVERS[name].label + (name === SCHEMA.defaultSolver ? ' (default)' : '')];
+      }));
+    }
+    return [own, ['true', 'on'], ['false', 'off']];
+  }
 
   // Rectangles for n panels in a w x h canvas (CSS px): the grid of columns x rows that
   // gives each panel's view box (aspect bw / bh) the most pixels per metre; side by side on
@@ -62,9 +84,9 @@ window.clothCompare = (function () {
     // A field's text -> its value for panel i's key, or a note and no change.
     function edit(i, key, raw) {
       const next = current.map(copy);
-      if (key === 'solver' || key === 'tethers' || key === 'shear') {
+      if (isChoice(key)) {
         if (raw === '') delete next[i][key];
-        else next[i][key] = key === 'solver' ? raw : raw === 'true';
+        else next[i][key] = SCHEMA.keys[key].kind === 'bool' ? raw === 'true' : raw;
         h.change(next);
         return;
       }
@@ -77,7 +99,8 @@ window.clothCompare = (function () {
         render(current);
         return;
       }
-      next[i][key] = c.value;
+      // A key whose 0 means none (tearing, a density) takes null for none.
+      next[i][key] = LIMITS[key].off && c.value === 0 ? null : c.value;
       h.change(next, note);
     }
 
@@ -91,7 +114,7 @@ window.clothCompare = (function () {
       input.setAttribute('aria-label', 'Panel ' + (i + 1) + ' ' + f.label);
       input.dataset.key = key;
       const label = document.createElement('label');
-      label.textContent = f.label + ' ';
+      label.textContent = window.clothFields.caption(key) + ' ';
       label.appendChild(input);
       return label;
     }
@@ -111,6 +134,18 @@ window.clothCompare = (function () {
       label.textContent = title + ' ';
       label.appendChild(sel);
       return label;
+    }
+
+    // Panel i's fields for `keys`, two to a row.
+    function fields(i, o, keys) {
+      const grid = document.createElement('div');
+      grid.className = 'grid2';
+      keys.forEach(function (key) {
+        const value = o[key] === null ? 'off' : o[key];
+        grid.appendChild(isChoice(key) ? choice(i, key, value, optionsOf(key), SCHEMA.keys[key].label)
+                                       : field(i, key, value));
+      });
+      return grid;
     }
 
     // The editor: one block per panel (solver, substeps, iterations; the rest folded).
@@ -136,26 +171,13 @@ window.clothCompare = (function () {
         head.appendChild(name);
         head.appendChild(remove);
         box.appendChild(head);
-        const grid = document.createElement('div');
-        grid.className = 'grid2';
-        grid.appendChild(choice(i, 'solver', o.solver, [['', 'scene\'s'], ['xpbd', 'XPBD (default)'], ['jakobsen', 'Jakobsen (seed)']], 'Solver'));
-        grid.appendChild(field(i, 'substeps', o.substeps));
-        grid.appendChild(field(i, 'iterations', o.iterations));
-        grid.appendChild(field(i, 'damping', o.damping));
-        box.appendChild(grid);
+        box.appendChild(fields(i, o, MAIN_KEYS));
         const more = document.createElement('details');
         const sum = document.createElement('summary');
         sum.textContent = 'more';
         more.appendChild(sum);
-        const grid2 = document.createElement('div');
-        grid2.className = 'grid2';
-        const yesNo = [['', 'solver\'s'], ['true', 'on'], ['false', 'off']];
-        grid2.appendChild(choice(i, 'tethers', o.tethers, yesNo, 'Tethers'));
-        grid2.appendChild(choice(i, 'shear', o.shear, [['', 'scene\'s'], ['true', 'on'], ['false', 'off']], 'Shear'));
-        grid2.appendChild(field(i, 'tolerance', o.tolerance));
-        grid2.appendChild(field(i, 'compliance', o.compliance));
-        more.appendChild(grid2);
-        if (o.tethers !== undefined || o.shear !== undefined || o.tolerance !== undefined || o.compliance !== undefined) more.open = true;
+        more.appendChild(fields(i, o, MORE_KEYS));
+        if (MORE_KEYS.some(function (key) { return o[key] !== undefined; })) more.open = true;
         box.appendChild(more);
         list.appendChild(box);
       });

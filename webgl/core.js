@@ -26,6 +26,21 @@ window.clothCore = (function (api) {
     };
   }
 
+  const SCHEMA = (function () {
+    const s = api.schema();
+    const keys = {}, order = [];
+    s[0].forEach(function (k) {
+      keys[k.key] = {
+        kind: k.kind, min: k.lo, max: k.hi, minOpen: k.lo_open, words: k.words, label: k.label,
+        unit: k.unit, live: k.live, panel: k.panel, fallback: k.fallback, bySolver: k.by_solver,
+        field: { min: k.field_lo, max: k.field_hi, step: k.step, int: k.kind === 'int' },
+      };
+      order.push(k.key);
+    });
+    return { keys: keys, order: order, solvers: s[1].slice(), defaultSolver: s[2], ops: s[3].slice(),
+             maxActions: s[4], maxPanels: s[5], maxVertices: s[6] };
+  })();
+
   const core = {
     // applyDue(cloth, next, frame) -> next: the scene's actions due at frames up to `frame`
     // (cloth/api.py apply_due, the CLI's own loop).
@@ -48,6 +63,14 @@ window.clothCore = (function (api) {
     // materials() -> {list: [[name, label, density kg/m^2, stiffness N/m], ...], preset: name}
     // (cloth/scene.py MATERIALS: the Material control's fabrics, declared there once).
     materials: function () { const m = api.materials(); return { list: m[0], preset: m[1] }; },
+    // schema() -> the scene's keys and the limits the page checks against, declared once in
+    // cloth/scene.py (KEYS) and read here (cloth/api.py schema): {keys: {name: {kind, min,
+    // max, minOpen, words, label, unit, live, panel, fallback, bySolver, field: {min, max,
+    // step, int}}}, order: [names], solvers, defaultSolver, ops, maxActions, maxPanels,
+    // maxVertices}. Made once; callers must not change it.
+    schema: function () { return SCHEMA; },
+    // edgesOf(cols, rows, shear) -> how many edges such a grid has (cloth/sim.py count_edges).
+    edgesOf: function (cols, rows, shear) { return api.edges_of(cols, rows, shear); },
     // sceneLimit() -> {bytes, message}: the most bytes any scene may have and what to say past
     // it (cloth/scene.py MAX_SCENE_BYTES).
     sceneLimit: function () { const l = api.scene_limit(); return { bytes: l[0], message: l[1] }; },

@@ -8,10 +8,20 @@
 window.clothFields = (function () {
   const LIMITS = window.clothScenes.LIMITS;
 
+  // What a field for LIMITS[key] is called: the key's label and unit (cloth/scene.py KEYS).
+  function caption(key) {
+    const lim = LIMITS[key];
+    return lim.label + (lim.unit ? ' (' + lim.unit + ')' : '');
+  }
+
   // Make `input` the number field for LIMITS[key]; onText(text) gets what was typed, on
-  // change and on each arrow step.
+  // change and on each arrow step. A <label> around it is captioned from the key.
   function attach(input, key, onText) {
     const lim = LIMITS[key];
+    const around = input.parentNode;
+    if (around && around.tagName === 'LABEL' && around.firstChild && around.firstChild.nodeType === 3) {
+      around.firstChild.nodeValue = caption(key) + ' ';
+    }
     input.type = 'text';
     input.inputMode = lim.int ? 'numeric' : (lim.min < 0 ? 'text' : 'decimal');   // a phone's decimal pad has no minus
     input.autocomplete = 'off';
@@ -31,5 +41,5 @@ window.clothFields = (function () {
     });
   }
 
-  return { attach: attach };
+  return { attach: attach, caption: caption };
 })();

@@ -21,12 +21,21 @@
 'use strict';
 
 window.clothRecorder = (function () {
-  const MAX_ACTIONS = 100000;            // cloth/scene.py MAX_ACTIONS
-  const OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut'];
-  const GRAB = 0, MOVE = 1, RELEASE = 2, PIN = 3, UNPIN = 4, SET = 5, CUT = 6;
+  // The scene format's limit and its action ops (cloth/scene.py MAX_ACTIONS, OPS): an action
+  // is kept as its op's index there.
+  const SCHEMA = window.clothCore.schema();
+  const MAX_ACTIONS = SCHEMA.maxActions;
+  const OPS = SCHEMA.ops;
+  function code(op) {
+    const i = OPS.indexOf(op);
+    if (i < 0) throw new Error('the core has no action op ' + op);
+    return i;
+  }
+  const GRAB = code('grab'), MOVE = code('move'), RELEASE = code('release'), PIN = code('pin'),
+    UNPIN = code('unpin'), SET = code('set'), CUT = code('cut');
   // Compare mode's forms (each panel holds its own vertex where it is, and every hand moves by
   // one displacement): a grab with no `to`, a move `by` [dx, dy] from where the hand took hold.
-  const GRAB_HERE = 7, MOVE_BY = 8;
+  const GRAB_HERE = OPS.length, MOVE_BY = OPS.length + 1;
   const FIRST_CAPACITY = 1024;
 
   function create() {

@@ -8,21 +8,20 @@
 
 window.clothScenes = (function () {
   const own = window.clothOptions.own;
-  // Ranges the UI accepts; anything outside is clamped with a visible note.
-  const LIMITS = {
-    cols: { min: 1, max: 200, int: true, step: 1, label: 'Columns' },
-    rows: { min: 1, max: 200, int: true, step: 1, label: 'Rows' },
-    iterations: { min: 0, max: 200, int: true, step: 1, label: 'Iterations' },
-    substeps: { min: 1, max: 16, int: true, step: 1, label: 'Substeps' },
-    gravity: { min: -100, max: 100, int: false, step: 0.1, label: 'Gravity' },
-    damping: { min: 0, max: 100, int: false, step: 0.1, label: 'Damping' },
-    fullScale: { min: 0.0001, max: 1, int: false, step: 0.001, label: 'Full scale' },
-    // The strain past which an edge breaks; empty, `off` or 0: no tearing.
-    tear: { min: 0.01, max: 100, int: false, step: 0.01, label: 'Tear', off: true },
-    // The compare editor's own keys (cloth/scene.py checks the same ranges).
-    tolerance: { min: 0, max: 1, int: false, step: 1e-4, label: 'Tolerance' },
-    compliance: { min: 0, max: 1000, int: false, step: 1e-4, label: 'Compliance' },
-  };
+  // The scene's keys, declared once in the core (cloth/scene.py KEYS): each field's label,
+  // unit and the range a person may type (the page's, within the core's own). Anything
+  // outside is clamped with a visible note. `off`: the key's 0 means none (tearing, a
+  // density), so an empty field or `off` is 0 too.
+  const SCHEMA = window.clothCore.schema();
+  const LIMITS = {};
+  SCHEMA.order.forEach(function (key) {
+    const k = SCHEMA.keys[key], f = k.field;
+    if (f.max <= f.min) return;   // not a number a person types
+    LIMITS[key] = { min: f.min, max: f.max, int: f.int, step: f.step, label: k.label, unit: k.unit,
+                    off: k.minOpen && k.fallback === 0 };
+  });
+  // The page's own: the colour scale's full scale (a strain), not a scene key.
+  LIMITS.fullScale = { min: 0.0001, max: 1, int: false, step: 0.001, label: 'Full scale', unit: '', off: false };
 
   // The one reading of a number typed into any field (the panel's, the compare editor's, the
   // Tear field, the full scale): a plain decimal number -> {value, read}, anything else ->
@@ -48,12 +47,14 @@ window.clothScenes = (function () {
     return { value: v, read: text === typed ? '' : 'read "' + typed.slice(0, 24) + '" as ' + v };
   }
 
-  // Each solver's own substeps and iterations (mirrors cloth/scene.py's
-  // solver_defaults): picking a solver in the UI starts from these.
-  const SOLVERS = {
-    jakobsen: { label: 'Jakobsen (seed)', substeps: 1, iterations: 20 },
-    xpbd: { label: 'XPBD + tethers, cells, lines', substeps: 8, iterations: 1 },
-  };
+  // Each solver's own substeps and iterations (cloth/scene.py's Keys, by solver): picking a
+  // solver in the UI starts from these.
+  const SOLVER_LABELS = { jakobsen: 'Jakobsen (seed)', xpbd: 'XPBD + tethers, cells, lines' };
+  const SOLVERS = {};
+  SCHEMA.solvers.forEach(function (name, i) {
+    SOLVERS[name] = { label: SOLVER_LABELS[name] || name, substeps: SCHEMA.keys.substeps.bySolver[i],
+                      iterations: SCHEMA.keys.iterations.bySolver[i] };
+  });
   // The presets start with the core's default solver (XPBD + tethers, the best
   // configuration on the benchmark): nearly inextensible, so strain colours are
   // faint on a hanging cloth (auto scale still shows where the strain is).
@@ -68,8 +69,9 @@ window.clothScenes = (function () {
   fabrics.list.forEach(function (m) {
     MATERIALS[m[0]] = { label: m[1], density: m[2], stiffness: m[3], compliance: m[3] > 0 ? 1 / m[3] : 0 };
   });
-  const DEFAULT_PARAMS = { solver: 'xpbd', substeps: 8, iterations: 1, gravity: -9.81, damping: 1, tear: 0,
-                           material: fabrics.preset };
+  const DEFAULT_PARAMS = { solver: SCHEMA.defaultSolver, substeps: SOLVERS[SCHEMA.defaultSolver].substeps,
+                           iterations: SOLVERS[SCHEMA.defaultSolver].iterations,
+                           gravity: SCHEMA.keys.gravity.fallback[1], damping: 1, tear: 0, material: fabrics.preset };
 
   // The named fabric a scene's density and compliance are, or 'custom' (a scene of its own,
   // or one without a density: every vertex 1 kg, as scenes were before materials).
@@ -206,7 +208,7 @@ window.clothScenes = (function () {
   // What the page runs at most, for every scene it loads (panel, preset, JSON box, link):
   // a frame is one task that cannot be split, so a scene beyond these would stop the page
   // answering a person (1000x1000 took 25-40 s a frame). The CLI has its own, larger limits.
-  const PAGE_LIMITS = { vertices: 200 * 200, work: 4e6 };
+  const PAGE_LIMITS = { vertices: LIMITS.cols.max * LIMITS.rows.max, work: 4e6 };
   // A frame's work estimated before loading, in edge updates: per step the sweeps, plus, for
   // XPBD, tethers, cells and line solves (about 6 per vertex, measured by projections).
   // Above REAL_TIME_WORK a frame takes more than its 1/60 s on an ordinary machine.
@@ -214,13 +216,12 @@ window.clothScenes = (function () {
 
   function workOf(scene) {
     const cols = scene.cols | 0, rows = scene.rows | 0;
-    const solver = scene.solver === 'jakobsen' ? 'jakobsen' : 'xpbd';
+    const solver = own(SOLVERS, scene.solver) ? scene.solver : SCHEMA.defaultSolver;
     const d = SOLVERS[solver];
     const substeps = Number.isFinite(scene.substeps) ? scene.substeps : d.substeps;
     const iterations = Number.isFinite(scene.iterations) ? scene.iterations : d.iterations;
     const n = cols * rows;
-    let m = Math.max(cols - 1, 0) * rows + cols * Math.max(rows - 1, 0);
-    if (scene.shear === true) m += Math.max(cols - 1, 0) * Math.max(rows - 1, 0);
+    const m = window.clothCore.edgesOf(Math.max(cols, 1), Math.max(rows, 1), scene.shear === true);
     return substeps * (Math.max(iterations, 0) * m + (solver === 'xpbd' ? 6 * n : 0));
   }
 
@@ -231,8 +232,9 @@ window.clothScenes = (function () {
     }
     const n = scene.cols * scene.rows;
     if (n > PAGE_LIMITS.vertices) {
-      return 'the page runs at most ' + PAGE_LIMITS.vertices + ' vertices (200×200), and this scene has ' +
-        scene.cols + '×' + scene.rows + ' = ' + n + ' (python -m cloth run takes up to 1000000)';
+      return 'the page runs at most ' + PAGE_LIMITS.vertices + ' vertices (' + LIMITS.cols.max + '×' +
+        LIMITS.rows.max + '), and this scene has ' + scene.cols + '×' + scene.rows + ' = ' + n +
+        ' (python -m cloth run takes up to ' + SCHEMA.maxVertices + ')';
     }
     const work = workOf(scene);
     if (work > PAGE_LIMITS.work) {

@@ -1,0 +1,95 @@
+"""The page takes every scene key from the core's one declaration (cloth/scene.py KEYS, issue
+#23): the panel's fields (caption, range, step), the compare editor's fields, each solver's
+starting substeps and iterations, the recorder's ops and limit and the page's grid limit. Held
+against the CPython declarations, so that neither side can drift. CPython's own side:
+tests/test_schema.py."""
+import json
+
+from browser_helpers import near  # noqa: F401  (the helpers' import sets the path)
+
+from cloth.scene import KEYS, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, COMPARE_KEYS, SOLVERS, \
+    solver_defaults
+from cloth.sim import count_edges
+
+PANEL_FIELDS = ['cols', 'rows', 'iterations', 'substeps', 'gravity', 'damping', 'tear']
+
+
+def caption(k):
+    return k.label + (' (' + k.unit + ')' if k.unit else '')
+
+
+def test_the_page_reads_the_cores_declarations(open_page):
+    pg = open_page()
+    got = pg.js('''(() => {
+      const s = clothCore.schema(), L = clothScenes.LIMITS;
+      return {order: s.order, keys: s.keys, limits: L, ops: s.ops, maxActions: s.maxActions,
+              maxPanels: s.maxPanels, maxVertices: s.maxVertices, solvers: clothScenes.SOLVERS,
+              pageVertices: clothScenes.PAGE_LIMITS.vertices,
+              edges: [[1, 1, false], [7, 5, false], [7, 5, true], [200, 3, true]].map(
+                (a) => clothCore.edgesOf(a[0], a[1], a[2]))};
+    })()''')
+    assert got['order'] == [k.key for k in KEYS]
+    assert got['ops'] == OPS and got['maxActions'] == MAX_ACTIONS
+    assert got['maxPanels'] == MAX_PANELS and got['maxVertices'] == MAX_VERTICES
+    for k in KEYS:
+        page = got['keys'][k.key]
+        assert (page['kind'], page['label'], page['unit'], page['live'], page['panel']) == \
+            (k.kind, k.label, k.unit, k.live, k.panel), k.key
+        if k.field_hi > k.field_lo:
+            lim = got['limits'][k.key]
+            assert (lim['min'], lim['max'], lim['step'], lim['label'], lim['int']) == \
+                (k.field_lo, k.field_hi, k.step, k.label, k.kind == 'int'), k.key
+        else:
+            assert k.key not in got['limits'], k.key
+    assert got['limits']['tear']['off'] and got['limits']['density']['off']
+    assert not got['limits']['damping']['off']
+    for i, name in enumerate(SOLVERS):
+        d = solver_defaults(name)
+        assert (got['solvers'][name]['substeps'], got['solvers'][name]['iterations']) == \
+            (d['substeps'], d['iterations'])
+    k = {k.key: k for k in KEYS}
+    assert got['pageVertices'] == k['cols'].field_hi * k['rows'].field_hi
+    assert got['edges'] == [count_edges(1, 1, False), count_edges(7, 5, False),
+                            count_edges(7, 5, True), count_edges(200, 3, True)]
+
+
+def test_the_panels_fields_are_captioned_and_bounded_by_their_keys(open_page):
+    pg = open_page()
+    k = {k.key: k for k in KEYS}
+    for key in PANEL_FIELDS:
+        text = pg.js('(id) => document.getElementById(id).parentNode.textContent.trim()', key)
+        assert text == caption(k[key]), key
+        title = pg.js('(id) => document.getElementById(id).title', key)
+        assert title == '%s: %s to %s' % (k[key].label, fmt(k[key].field_lo), fmt(k[key].field_hi)), key
+    # Typing past a field's end clamps to the declared end, and says so.
+    pg.js('clothApp.setPaused(true)')
+    pg.fill('#substeps', '1e9')
+    pg.press('#substeps', 'Enter')
+    assert pg.js('clothApp.info().params.substeps') == k['substeps'].field_hi
+    assert 'Substeps clamped to its maximum %d' % k['substeps'].field_hi in pg.info()['note']
+
+
+def fmt(x):
+    return str(int(x)) if x == int(x) else repr(x)
+
+
+def test_the_compare_editor_offers_exactly_the_keys_a_panel_may_have(open_page):
+    pg = open_page()
+    pg.locator('#btn-compare-pair').click()
+    shown = pg.js('''[...document.querySelectorAll('#compare-list .compare-panel')].map(
+        (p) => [...p.querySelectorAll('[data-key]')].map((el) => el.dataset.key))''')
+    assert len(shown) == 2
+    for keys in shown:
+        assert sorted(keys) == sorted(COMPARE_KEYS)
+    # Every field it offers makes a scene the core takes: a panel with Tear and Density off
+    # (null: none) runs, and its scene says so.
+    pg.js('clothApp.setPaused(true)')
+    pg.locator('#compare-list summary >> nth=1').click()     # panel 2's "more"
+    for key in ('tear', 'density'):
+        sel = '#compare-list input[data-key=%s] >> nth=1' % key
+        pg.fill(sel, 'off')
+        pg.press(sel, 'Enter')
+        scene = json.loads(pg.js('clothApp.panels()')[1]['scene'])
+        assert key in scene and scene[key] is None, (key, scene.get(key))
+    pg.js('clothApp.advance(5)')
+    assert pg.js('clothApp.info().frames') >= 5
