@@ -5,11 +5,15 @@ returns, and the parity tests compare its CPython and browser results number for
 """
 
 from cloth.host import to_json, kind_of, is_finite, parse_json
-from cloth.scene import (parse_scene, settings_scene, SceneError, fail, MAX_FRAMES, MATERIALS,
+from cloth.scene import (parse_scene, fail, MAX_FRAMES, MATERIALS,
                          DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large, KEYS, SOLVERS,
                          DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES)
-from cloth.sim import Cloth, count_edges, frame, measure, grab, move, move_by, release, pin, unpin, retune, cut, \
+from cloth.sim import Cloth, count_edges, frame, measure, grab, move, move_by, release, pin, unpin, cut, \
     nearest
+from cloth.script import apply_settings, apply_due as due
+from cloth.session import open_session, step_panel, frames_ran, frames_left, at_replay_end, \
+    gesture_grab, gesture_move, gesture_release, gesture_toggle_pin, gesture_cut, change, \
+    recording_text, recording_complete, recording_count, recording_full
 from cloth.solve import mark_overstretched
 
 # A trace holds frames x vertices points. The CLI streams it (cloth/__main__.py: memory
@@ -53,6 +57,17 @@ def edges_of(cols, rows, shear):
     return count_edges(cols, rows, shear)
 
 
+def session_functions():
+    """[[name, function]] of a session's entry points (cloth/session.py), each taking the
+    session first: the page's panels, gestures, settings, recording and replay."""
+    return [['open', open_session], ['stepPanel', step_panel], ['framesRan', frames_ran],
+            ['framesLeft', frames_left], ['atReplayEnd', at_replay_end], ['grab', gesture_grab],
+            ['move', gesture_move], ['release', gesture_release],
+            ['togglePin', gesture_toggle_pin], ['cut', gesture_cut], ['change', change],
+            ['recordingText', recording_text], ['recordingComplete', recording_complete],
+            ['recordingCount', recording_count], ['recordingFull', recording_full]]
+
+
 def operations():
     """[[name, function]] of the operations the page calls on a running cloth, every frame or
     every pointer event: cloth/sim.py's module functions, each taking the cloth first. The page
@@ -88,45 +103,11 @@ def set_settings(cloth, keys_json_text):
     apply_settings(cloth, parsed[1], 'scene')
 
 
-def apply_settings(cloth, keys, where):
-    scene = settings_scene(cloth.scene.settings, keys, where)
-    # The grid's own keys and the script stay the cloth's: a set changes settings only.
-    scene.pins = cloth.scene.pins
-    scene.actions = cloth.scene.actions
-    scene.frames = cloth.scene.frames
-    retune(cloth, scene)
-
-
 def check_frames(frames):
     if kind_of(frames) != 'number' or not is_finite(frames) or frames != frames // 1:
         fail('frames: must be a non-negative integer')
     if frames < 0 or frames > MAX_FRAMES:
         fail('frames: must be a non-negative integer of at most 10000000')
-
-
-def apply_action(cloth, action):
-    op = action.op
-    k = action.vertex
-    if op == 'grab':
-        if action.has_to:
-            grab(cloth, k, action.to_x, action.to_y)
-        else:
-            grab(cloth, k, cloth.pos[k + k], cloth.pos[k + k + 1])
-    elif op == 'move':
-        if action.by:
-            move_by(cloth, k, action.to_x, action.to_y)
-        else:
-            move(cloth, k, action.to_x, action.to_y)
-    elif op == 'release':
-        release(cloth, k)
-    elif op == 'pin':
-        pin(cloth, k)
-    elif op == 'unpin':
-        unpin(cloth, k)
-    elif op == 'set':
-        apply_settings(cloth, action.keys, 'scene')
-    elif op == 'cut':
-        cut(cloth, action.from_x, action.from_y, action.to_x, action.to_y)
 
 
 def positions_of(cloth):
@@ -135,24 +116,10 @@ def positions_of(cloth):
 
 
 def apply_due(cloth, next_action, f):
-    """Apply the scene's actions from index `next_action` on whose frame is <= f (they come
-    sorted by frame); return the index of the first one not yet due. The CLI and the page step
-    scripted scenes through this one function."""
-    actions = cloth.scene.actions
-    while next_action < len(actions) and actions[next_action].frame <= f:
-        apply_action(cloth, actions[next_action])
-        next_action += 1
-    return next_action
-
-
-def drop_actions_after(cloth, f):
-    """Forget the scene's actions after frame f (the page cuts a replayed recording so when a
-    person takes over at frame f)."""
-    actions = cloth.scene.actions
-    keep = 0
-    while keep < len(actions) and actions[keep].frame <= f:
-        keep += 1
-    cloth.scene.actions = actions[:keep]
+    """The scene's actions from index `next_action` on that are due at frame f, applied;
+    returns the index of the first one not yet due (script.apply_due: the CLI's loop and the
+    benchmark's runs step through it)."""
+    return due(cloth, next_action, f)
 
 
 def simulate(cloth, frames, trace):

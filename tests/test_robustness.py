@@ -6,7 +6,8 @@ import math
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from cloth.api import load, apply_action
+from cloth.api import load
+from cloth.script import apply_action
 from cloth.scene import SceneError
 
 from hard_cases import HARD, UNSTABLE

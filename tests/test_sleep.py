@@ -130,7 +130,7 @@ def test_sleeping_leaves_a_settled_cloth_where_it_would_have_been():
                          {'frame': 0, 'op': 'release', 'vertex': 15}])
     asleep = load(scene(**keys))
     awake = load(scene(sleep=False, **keys))
-    from cloth.api import apply_action
+    from cloth.script import apply_action
     for c in (asleep, awake):
         for a in c.scene.actions:
             apply_action(c, a)

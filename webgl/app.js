@@ -1,5 +1,6 @@
-// The app: owns the panels' cloths, runs the loop, wires renderer, input, recorder, charts
-// and UI, and publishes the test seam window.clothApp.
+// The app: runs the loop and wires the session (clothCore.session: the panels' cloths, their
+// scripts, the recording, the replay), renderer, input, charts and UI, and publishes the test
+// seam window.clothApp.
 //
 // Loop: the core advances a fixed dt per frame(); the wall clock appears only
 // here. Elapsed time goes into an accumulator, capped at MAX_GAP (a tab switch
@@ -11,18 +12,16 @@
 // Frames and actions: the state at frame f is the state after f frames and the actions of
 // frame f (cloth/api.py simulate). The scene's own actions of frame f are applied as frame f
 // ends (those of frame 0 at load), and a person's gestures between frame f and f + 1 are
-// applied when they happen and recorded at frame f (recorder.js), so that the recording,
-// run by the CLI, is what the page showed.
+// applied when they happen and recorded at frame f by the session (cloth/session.py), so
+// that the recording, run by the CLI, is what the page showed.
 //
 // Replay: a scene that says how many frames it was recorded for (`frames`) plays up to
 // that frame and stops there, paused. A person who takes over before the end (a gesture, a
-// setting) cuts the script at that frame and is recorded from there on.
+// setting) cuts the script at that frame and is recorded from there on (the session).
 //
 // Panels: a scene with a `compare` list runs once per entry, side by side (compare.js), each
-// panel its own cloth with the entry's settings written in, all under the same hands: every
-// gesture, in any panel, happens to the same vertex in each panel, in the same frame, and is
-// recorded once; a hand takes hold of each panel's vertex where that panel has it and moves
-// every panel's hand by the same displacement. A scene without one is a single panel.
+// panel its own cloth with the entry's settings written in, all under the same hands (the
+// session applies every gesture to each). A scene without one is a single panel.
 'use strict';
 
 (function () {
@@ -47,24 +46,21 @@
     panels: [], cloth: null, base: null, sceneText: '', sceneObj: null, view: null,
     preset: 'curtain', params: null, compare: [],
     mode: 'strain', scaleMode: 'auto', fullScale: 0.05,
-    paused: false, acc: 0, last: -1, frames: 0, renders: 0, dirty: true, needMeasure: true,
+    paused: false, acc: 0, last: -1, renders: 0, dirty: true, needMeasure: true,
     renderMs: NaN, fps: NaN, lastReadout: 0, scale: 0,
     wanted: 0, played: 0, speed: 1,   // seconds of wall clock and of simulation since the last readout
-    replayEnd: -1,      // the frame a replay stops at, or -1 when none is playing
-    replayEnded: false, // a replay stopped at its end and nothing has happened since
     pinEdits: {},       // vertex -> pinned: the pins a person set (true) or removed (false)
-    // Compare mode: vertex -> {x, y, dx, dy}: where its pointer took hold (world metres, in the
-    // panel pressed) and how far the pointer has taken it since: every panel's hand moves by
-    // that one displacement from where its own vertex was.
-    hands: {},
     rects: [],          // the panels' rectangles in the canvas, CSS px
-    baseNext: 0,        // the index of state.base's next scripted action (core.applyDue)
     trail: false,       // the blade's trail is fading out: keep drawing it
     linkPending: false, // a link is being copied (the clipboard answers later)
     slowWarning: '',    // what load() warned of a scene too heavy for real time ('' for none)
     relayouts: 0,       // how many times the views were laid out again (info(): the tests)
   };
-  const recorder = window.clothRecorder.create();
+  // The scene's panels, their scripts, the recording and the replay: clothCore.session (the
+  // core's cloth/session.py). Every gesture and setting goes to it, which applies it to every
+  // panel and records it; the page never records beside it.
+  const session = core.session;
+  let sess = null;
   const share = window.clothShare;
   const blade = window.clothBlade.create(document.getElementById('blade'));
   let bladeOn = false;      // the Cut tool (touch and pen cut with it; a mouse with Alt too)
@@ -152,22 +148,15 @@
   // holds: [{id, k}] pointers that go on holding vertex k of the new cloth (a grid change);
   // any other pointer lets go.
   function load(text, preset, view, holds) {
-    let obj, cloths = [], base;
+    let obj, opened;
     try {
       // The core checks the scene (its messages, as in the CLI); then the page's limits,
       // before anything is built: a scene beyond them would take seconds a frame.
-      const scene = core.parseScene(text);
+      core.parseScene(text);
       obj = JSON.parse(text);
       const limit = limitOf(obj);
       if (limit) throw new Error(limit);
-      const list = Array.isArray(obj.compare) ? obj.compare : [];
-      if (list.length === 0) {
-        cloths.push(core.build(scene));
-        base = cloths[0];
-      } else {
-        for (let i = 0; i < list.length; i++) cloths.push(core.build(core.parseScene(text, i)));
-        base = core.build(scene);
-      }
+      opened = session.open(text);
     } catch (e) {
       const msg = e && e.message ? e.message : String(e);
       ui.error('Scene not loaded: ' + msg + (state.cloth ? ' (the previous scene keeps running)' : ''));
@@ -176,27 +165,23 @@
     ui.clearError();
     gestures.releaseAll(holds || []);
     state.compare = Array.isArray(obj.compare) ? obj.compare.map(function (o) { return Object.assign({}, o); }) : [];
-    state.panels = cloths.map(function (cloth, i) {
-      return { cloth: cloth, run: null, draw: renderer.ok ? renderer.panel(i) : null,
+    sess = opened;
+    state.panels = sess.panels.map(function (cloth, i) {
+      return { cloth: cloth, run: runner.panel(sess, i), draw: renderer.ok ? renderer.panel(i) : null,
                snap: core.snapshot(cloth), simMs: NaN, clamped: 0 };
     });
-    state.cloth = cloths[0];
-    state.base = base;
-    state.baseNext = 0;
+    state.cloth = sess.panels[0];
+    state.base = sess.base;
     state.pinEdits = {};
-    state.hands = {};
     state.sceneText = text;
     state.sceneObj = obj;
     state.preset = preset;
     state.view = view || scenes.viewFor(obj);
-    state.frames = 0;
     state.acc = 0;
-    recorder.start(obj, window.clothRecorder.scriptOf(state.cloth), state.cloth.n_verts);
-    state.replayEnd = typeof obj.frames === 'number' ? obj.frames : -1;
-    state.replayEnded = false;
-    // The scene's own actions of frame 0 come before any frame (runner.run applies them).
-    state.panels.forEach(function (p) { p.run = runner.run(p.cloth); });
-    scripted(0, state.panels[0].run.next);
+    // The scene's own actions of frame 0 came before any frame (the session applied them): a
+    // pointer kept over a grid change lets go of a vertex the script took.
+    gestures.held().forEach(function (h) { if (state.cloth.held[h.k] !== 0) gestures.forget(h.k); });
+    state.params = paramsOf(state.base);
     state.wanted = 0; state.played = 0; state.speed = 1;
     charts.reset(state.panels.length);
     compareUI.render(state.compare);
@@ -222,73 +207,52 @@
       'This scene needs about ' + work.toExponential(1) + ' edge updates a frame: ' +
       'expect slow motion on an ordinary machine' : '';
     if (state.slowWarning) ui.note(state.slowWarning);
-    if (state.replayEnd === 0) endReplay();
-    else if (state.replayEnd > 0) setPaused(false);
+    if (sess.replay_end === 0) { session.atReplayEnd(sess); setPaused(true); }
+    else if (sess.replay_end > 0) setPaused(false);
     return state.cloth;
   }
 
-  // After the scene's own actions [from, to) of the first panel were applied (every panel has
-  // the same script): a scripted grab takes its vertex from a pointer that held it (the
-  // script moves it now, and the pointer's release must not let go of the script's hold); a
-  // scripted set changes what the settings panel shows; the base cloth follows the script.
-  function scripted(from, to) {
-    const actions = state.cloth.scene.actions;
-    if (state.base !== state.cloth) state.baseNext = core.applyDue(state.base, state.baseNext, state.frames);
-    for (let i = from; i < to; i++) {
-      if (actions[i].op === 'grab') gestures.forget(actions[i].vertex);
-    }
+  // After the script's actions ran (`ran`: some did): a scripted grab took its vertex from a
+  // person's hand (the session's `person`), so the pointer lets go of it here too, and its
+  // release will not let go of the script's hold; a scripted set changes what the settings
+  // panel shows.
+  function scripted(ran) {
     state.params = paramsOf(state.base);
-    if (to > from) {
-      ui.setParams(state.params);
-      ui.setSolver(state.params.solver);
-      state.needMeasure = true;
-      state.dirty = true;
+    if (!ran) return;
+    if (gestures.count() > 0) {
+      gestures.held().forEach(function (h) { if (sess.person[h.k] === 0) gestures.forget(h.k); });
     }
+    sess.script_set = false;
+    ui.setParams(state.params);
+    ui.setSolver(state.params.solver);
+    state.needMeasure = true;
+    state.dirty = true;
   }
 
   // ---- replay, recording, sharing ---------------------------------------------
 
-  function endReplay() {
-    state.replayEnd = -1;
-    state.replayEnded = true;
-    setPaused(true);
-  }
-
-  // A person acts (a gesture, a setting): a replay still playing is cut at this frame, the
-  // script's holds are let go, and the recording goes on from here; a replay that ended
-  // starts running again.
-  function takeOver() {
-    if (state.replayEnd >= 0) {
-      state.replayEnd = -1;
-      state.panels.forEach(function (p) { core.dropActionsAfter(p.cloth, state.frames); });
-      if (state.base !== state.cloth) core.dropActionsAfter(state.base, state.frames);
-      recorder.truncate(state.frames);
-      const c = state.cloth;
-      for (let k = 0; k < c.n_verts; k++) {
-        if (c.held[k] !== 0 && !gestures.holds(k)) {
-          state.panels.forEach(function (p) { p.run.ops.release(k); });
-          recorder.release(state.frames, k);
-        }
-      }
-      state.dirty = true;
-    }
-    if (state.replayEnded) { state.replayEnded = false; setPaused(false); }
+  // A person acted (a gesture, a setting; the session took over a replay that was playing,
+  // cutting its script at this frame): a replay that had ended runs again.
+  function acted() {
+    if (sess.resumed) { sess.resumed = false; setPaused(false); }
+    state.needMeasure = true;
+    state.dirty = true;
   }
 
   function recordingText() {
-    return JSON.stringify(recorder.scene(recorder.complete(state.frames)));
+    return session.recordingText(sess);
   }
 
   function recordingName() {
     return 'cloth-' + (state.preset || 'scene') + (state.compare.length ? '-compare' : '') + '-' +
-      recorder.complete(state.frames) + 'f.json';
+      session.recordingComplete(sess) + 'f.json';
   }
 
   // Restart the recording from frame 0 at real speed.
   function replay() {
     const text = recordingText();
     load(text, state.preset === 'custom' ? 'custom' : state.preset, state.view);
-    ui.note('Replaying ' + state.replayEnd + ' frames; a gesture takes over');
+    ui.note('Replaying ' + sess.replay_end + ' frames; a gesture takes over');
   }
 
   function exportRecording() {
@@ -451,11 +415,8 @@
       const limit = limitOf(obj);
       if (limit) throw new Error(limit);
       if (Object.keys(keys).length) {
-        takeOver();
-        const text = JSON.stringify(keys);
-        if (state.base !== state.cloth) core.setSettings(state.base, text);
-        state.panels.forEach(function (panel) { core.setSettings(panel.cloth, text); });
-        recorder.set(state.frames, keys);
+        session.change(sess, JSON.stringify(keys));
+        acted();
       }
     } catch (e) {
       ui.error('Setting not applied: ' + e.message + ' (the cloth runs on as it was)');
@@ -594,7 +555,7 @@
   function allAsleep() {
     for (let i = 0; i < state.panels.length; i++) {
       const p = state.panels[i];
-      if (!p.cloth.asleep || p.run.next < p.cloth.scene.actions.length) return false;
+      if (!p.cloth.asleep || sess.script_next[i] < p.cloth.scene.actions.length) return false;
     }
     return true;
   }
@@ -603,22 +564,22 @@
   // one frame runs; the first panel decides how many, and the others run as many); a replay
   // stops at its last frame. Returns the frames run.
   function simulate(n, budgetMs) {
-    if (state.replayEnd >= 0) n = Math.min(n, state.replayEnd - state.frames);
+    n = session.framesLeft(sess, n);
     if (n <= 0) { atReplayEnd(); return 0; }
+    const from = sess.script_next[0];
     if (allAsleep()) {
       // At rest (the core stopped stepping them): nothing to step, measure or draw until an
       // operation wakes them.
-      state.frames += n;
+      session.framesRan(sess, n, from);
       state.panels.forEach(function (p) { p.run.frame += n; p.simMs = NaN; });
       atReplayEnd();
       return n;
     }
-    const first = state.panels[0].run, from = first.next;
     const share_ = state.panels.length > 1 ? budgetMs / state.panels.length : budgetMs;
-    const done = runner.step(first, n, budgetMs > 0 ? share_ : 0);
-    for (let i = 1; i < state.panels.length; i++) runner.step(state.panels[i].run, done, 0);
-    state.frames += done;
-    scripted(from, first.next);
+    const done = runner.stepPanel(state.panels[0].run, sess, 0, n, budgetMs > 0 ? share_ : 0);
+    for (let i = 1; i < state.panels.length; i++) runner.stepPanel(state.panels[i].run, sess, i, done, 0);
+    session.framesRan(sess, done, from);
+    scripted(sess.script_next[0] > from || sess.script_set);
     for (let i = 0; i < state.panels.length; i++) {
       const p = state.panels[i];
       p.cloth.measure();
@@ -649,7 +610,7 @@
   }
 
   function atReplayEnd() {
-    if (state.replayEnd >= 0 && state.frames >= state.replayEnd) endReplay();
+    if (session.atReplayEnd(sess)) setPaused(true);
   }
 
   // The overlays' boxes in client pixels (left, top, right, bottom each), measured on a
@@ -722,7 +683,7 @@
     const n = Math.max(0, Math.floor(Number(frames) || 0));
     if (n > 0) simulate(n);
     if (!undrawn) render();
-    return state.frames;
+    return sess.frame;
   }
 
   function setPaused(paused) {
@@ -752,8 +713,8 @@
         (slow ? ' · slow motion ×' + state.speed.toFixed(2) : ''),
     });
     ui.setLegend(state.scale, state.scaleMode === 'fixed' ? 'fixed' : (frameMax() > AUTO_FLOOR ? 'max' : 'floor'));
-    ui.setRecording({ frames: state.frames, actions: recorder.count(), full: recorder.full(),
-                      complete: recorder.complete(state.frames), replayEnd: state.replayEnd });
+    ui.setRecording({ frames: sess.frame, actions: session.recordingCount(sess), full: session.recordingFull(sess),
+                      complete: session.recordingComplete(sess), replayEnd: sess.replay_end });
     if (state.panels.length > 1) {
       state.panels.forEach(function (p, i) {
         // A narrow panel (a phone, four panels) gets the short label: the solver and its
@@ -848,7 +809,7 @@
 
   // Pointers (input.js) become gestures (gestures.js) on the views below, and a gesture
   // becomes the actions after them: applied at once through the core, in every panel, then
-  // recorded at the current frame (recorder.js). A person acting during a replay takes over.
+  // recorded at the current frame by the session. A person acting during a replay takes over.
   const gestures = window.clothGestures.create({
     // client px -> {panel, x, y} world metres in the panel under the point (panel -1: none)
     locate: function (clientX, clientY) {
@@ -872,7 +833,7 @@
     },
     // Held by someone else: another pointer, or the scene's script (a replay's script lets go
     // when a person takes over, so its vertices can be grabbed then).
-    isHeld: function (k) { return state.cloth.held[k] !== 0 && (state.replayEnd < 0 || gestures.holds(k)); },
+    isHeld: function (k) { return state.cloth.held[k] !== 0 && (sess.replay_end < 0 || gestures.holds(k)); },
     bladeOn: function () { return bladeOn; },
     trail: function (clientX, clientY, start) {
       const r = canvas.getBoundingClientRect();
@@ -880,78 +841,21 @@
       state.trail = true;
     },
   }, {
-    // The actions. One cloth: the hand takes hold at (x, y) and goes where the pointer takes it. Compare
-    // mode: each panel's hand takes hold of its own vertex where it is (the panels' cloths
-    // differ, so one panel's point would move the others' vertex at once, and a tap would
-    // fling them) and moves by the pointer's displacement (recorded as a grab with no `to`
-    // and moves `by`).
-    grab: function (k, x, y) {
-      takeOver();
-      if (state.panels.length > 1) {
-        for (let i = 0; i < state.panels.length; i++) {
-          const pos = state.panels[i].cloth.pos;
-          state.panels[i].run.ops.grab(k, pos[2 * k], pos[2 * k + 1]);
-        }
-        state.hands[k] = { x: x, y: y, dx: 0, dy: 0 };
-        recorder.grabHere(state.frames, k);
-      } else {
-        state.panels[0].run.ops.grab(k, x, y);
-        recorder.grab(state.frames, k, x, y);
-      }
-      touched();
-    },
-    move: function (k, x, y) {
-      const hand = state.hands[k];
-      if (state.panels.length > 1) {
-        if (!hand) return;                      // no hand of this page's holds k
-        const dx = x - hand.x, dy = y - hand.y, dx0 = hand.dx, dy0 = hand.dy;
-        if (dx === dx0 && dy === dy0) return;   // a hand held still changes nothing
-        takeOver();
-        for (let i = 0; i < state.panels.length; i++) state.panels[i].run.ops.move_by(k, dx, dy);
-        hand.dx = dx; hand.dy = dy;
-        recorder.moveBy(state.frames, k, dx, dy, dx0, dy0);
-        touched();
-        return;
-      }
-      // where the hand is (a hand of finite strength's vertex may be short of it)
-      const target = state.cloth.target, x0 = target[2 * k], y0 = target[2 * k + 1];
-      if (x === x0 && y === y0) return;       // a hand held still changes nothing
-      takeOver();
-      state.panels[0].run.ops.move(k, x, y);
-      recorder.move(state.frames, k, x, y, x0, y0);
-      touched();
-    },
-    release: function (k) {
-      if (k >= state.cloth.n_verts || state.cloth.held[k] === 0) return;
-      takeOver();
-      for (let i = 0; i < state.panels.length; i++) state.panels[i].run.ops.release(k);
-      recorder.release(state.frames, k);
-      touched();
-    },
+    // The actions: each goes to the session, which applies it to every panel and records it
+    // (one cloth: the hand takes hold at (x, y) and goes where the pointer takes it; compare
+    // mode: each panel's hand holds its own vertex where it is and moves by the pointer's
+    // displacement, cloth/session.py).
+    grab: function (k, x, y) { session.grab(sess, k, x, y); acted(); },
+    move: function (k, x, y) { if (session.move(sess, k, x, y)) acted(); },
+    release: function (k) { if (session.release(sess, k)) acted(); },
     togglePin: function (k) {
-      takeOver();
-      const pinned = state.cloth.pinned[k] !== 0;
-      for (let i = 0; i < state.panels.length; i++) {
-        if (pinned) state.panels[i].run.ops.unpin(k); else state.panels[i].run.ops.pin(k);
-      }
-      if (pinned) recorder.unpin(state.frames, k); else recorder.pin(state.frames, k);
-      state.pinEdits[k] = !pinned;
-      touched();
+      state.pinEdits[k] = state.cloth.pinned[k] === 0;
+      session.togglePin(sess, k);
+      acted();
     },
-    cut: function (x0, y0, x1, y1) {
-      if (x0 === x1 && y0 === y1) return;
-      takeOver();
-      for (let i = 0; i < state.panels.length; i++) state.panels[i].run.ops.cut(x0, y0, x1, y1);
-      recorder.cut(state.frames, x0, y0, x1, y1);
-      touched();
-    },
+    cut: function (x0, y0, x1, y1) { if (session.cut(sess, x0, y0, x1, y1)) acted(); },
   });
   window.clothInput.attach(canvas, gestures);
-
-  function touched() {
-    state.needMeasure = true;
-    state.dirty = true;
-  }
 
   function resized(w, h, devW, devH) {
     renderer.resize(w, h, devW, devH);
@@ -1078,12 +982,12 @@
         webgl: renderer.ok ? renderer.version : 0, lost: !!renderer.lost, restores: renderer.restores || 0,
         relayouts: state.relayouts,
         drawCalls: renderer.drawCalls || 0, paused: state.paused, mode: state.mode, scaleMode: state.scaleMode,
-        scale: state.scale, fullScale: state.fullScale, autoFloor: AUTO_FLOOR, frames: state.frames, preset: state.preset, params: state.params,
+        scale: state.scale, fullScale: state.fullScale, autoFloor: AUTO_FLOOR, frames: sess ? sess.frame : 0, preset: state.preset, params: state.params,
         asleep: !!(state.cloth && allAsleep()), renders: state.renders,
-        replay: { playing: state.replayEnd >= 0, end: state.replayEnd, ended: state.replayEnded },
+        replay: { playing: sess.replay_end >= 0, end: sess.replay_end, ended: sess.replay_ended },
         linkPending: !!state.linkPending, panels: state.panels.length, simMs: simMs, chartLatest: charts.latest(0),
         edges: state.cloth ? state.cloth.n_edges : 0, broken: state.cloth ? state.cloth.broken : 0, cutTool: bladeOn,
-        recorded: recorder.count(), recordingFull: recorder.full(),
+        recorded: session.recordingCount(sess), recordingFull: session.recordingFull(sess),
         error: ui.errorText(), note: ui.noteText(), scene: state.sceneText,
         canvas: [canvas.width, canvas.height], dpr: window.devicePixelRatio || 1,
       };
@@ -1123,7 +1027,7 @@
     state.linkPending = true;
     linked.then(function (text) {
       load(text, 'custom', null);
-      ui.note('Replaying the recording from the link (' + state.replayEnd + ' frames); a gesture takes over');
+      ui.note('Replaying the recording from the link (' + sess.replay_end + ' frames); a gesture takes over');
     }).catch(function (e) {
       const shown = own(scenes.PRESETS, state.preset)
         ? 'showing the ' + scenes.PRESETS[state.preset].label + ' preset' : 'the scene shown runs on';

@@ -58,8 +58,6 @@ window.clothCore = (function (api) {
     // scene keys (cloth/api.py set_settings: what a recorded `set` action does); throws,
     // changing nothing, on bad keys.
     setSettings: wrap(function (cloth, text) { return api.set_settings(cloth, text); }),
-    // dropActionsAfter(cloth, frame): forget the script after that frame (a person took over).
-    dropActionsAfter: function (cloth, f) { api.drop_actions_after(cloth, f); },
     // materials() -> {list: [[name, label, density kg/m^2, stiffness N/m], ...], preset: name}
     // (cloth/scene.py MATERIALS: the Material control's fabrics, declared there once).
     materials: function () { const m = api.materials(); return { list: m[0], preset: m[1] }; },
@@ -97,6 +95,17 @@ window.clothCore = (function (api) {
     return out;
   };
   core.parseScene = wrap(function (text, panel) { return api.check(text, panel === undefined ? -1 : panel); });
+
+  // session: a scene's panels under one pair of hands, their scripts, the recording and the
+  // replay (cloth/session.py; its functions take the session first). open(text) -> a session
+  // (throws Error on a bad scene); change(s, keysJsonText) throws, changing nothing, on bad
+  // keys. The rest cannot throw and are called as they are (the loop calls them every frame:
+  // no wrapper's allocation).
+  const THROWS = { open: true, change: true };
+  core.session = {};
+  api.session_functions().forEach(function (entry) {
+    core.session[entry[0]] = THROWS[entry[0]] ? wrap(entry[1]) : entry[1];
+  });
 
   // ops(cloth): the per-frame operations (cloth/api.py operations: cloth/sim.py's module
   // functions) as closures over one cloth, made once per scene. Errors stay Transcrypt's here;

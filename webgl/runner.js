@@ -38,6 +38,33 @@ window.clothRunner = (function () {
     return done;
   }
 
+  // Panel i of a session (clothCore.session: its script is the session's to apply) as a run:
+  // its cloth, its operations, and the timing of its last batch.
+  function panel(session, i) {
+    const cloth = session.panels[i];
+    return { cloth: cloth, ops: core.ops(cloth), next: 0, frame: session.frame, ms: 0, proj: 0 };
+  }
+
+  // Run up to `frames` frames of session panel i (r = panel(session, i)), each followed by
+  // the script's actions of that frame; with a budget (ms) stop once it is spent, after at
+  // least one. Returns the frames done; the session's frame count moves on once every panel
+  // has run them (clothCore.session.framesRan).
+  function stepPanel(r, session, i, frames, budgetMs) {
+    const stepOne = core.session.stepPanel, cloth = r.cloth;
+    const p0 = cloth.projections;
+    const t0 = performance.now();
+    let done = 0;
+    while (done < frames) {
+      done++;
+      stepOne(session, i, session.frame + done);
+      if (budgetMs > 0 && performance.now() - t0 > budgetMs) break;
+    }
+    r.frame += done;
+    r.ms = performance.now() - t0;
+    r.proj = cloth.projections - p0;
+    return done;
+  }
+
   // What a cloth is running, as the benchmark's tables and the compare panels say it.
   function describe(cl) {
     return { solver: cl.use_xpbd ? 'xpbd' : 'jakobsen', substeps: cl.substeps,
@@ -62,5 +89,5 @@ window.clothRunner = (function () {
     return parts.join(', ');
   }
 
-  return { run: run, step: step, describe: describe, label: label };
+  return { run: run, step: step, panel: panel, stepPanel: stepPanel, describe: describe, label: label };
 })();

@@ -1,6 +1,6 @@
 """The page takes every scene key from the core's one declaration (cloth/scene.py KEYS, issue
 #23): the panel's fields (caption, range, step), the compare editor's fields, each solver's
-starting substeps and iterations, the recorder's ops and limit and the page's grid limit. Held
+starting substeps and iterations, the action ops and limits and the page's grid limit. Held
 against the CPython declarations, so that neither side can drift. CPython's own side:
 tests/test_schema.py."""
 import json
