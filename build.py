@@ -28,8 +28,8 @@ WEBGL = os.path.join(ROOT, 'webgl')
 DIST_HTML = os.path.join(ROOT, 'dist', 'index.html')
 
 # The hand-written page, in load order. Every webgl/*.js must be listed here.
-SCRIPTS = ['core.js', 'options.js', 'scenes.js', 'fields.js', 'runner.js', 'share.js',
-           'renderer.js', 'gestures.js', 'input.js', 'canvas2d.js', 'blade.js', 'charts.js',
+SCRIPTS = ['core.js', 'options.js', 'scenes.js', 'grid.js', 'fields.js', 'runner.js', 'share.js',
+           'renderer.js', 'gestures.js', 'input.js', 'canvas2d.js', 'blade.js', 'charts.js', 'overlays.js',
            'compare.js', 'ui.js', 'app.js']
 STYLES = ['style.css']
 # GLSL, inlined as <script type="x-shader/x-vertex|fragment" id="shader-NAME"> for renderer.js.

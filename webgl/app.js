@@ -433,18 +433,11 @@
     state.dirty = true;
   }
 
-  // A new grid. Pins keep their meaning, row and column: the preset's pins for the new size
-  // (a custom scene's own pins and scripted actions, moved to the same row and column), with
-  // the pins a person set or removed (state.pinEdits, kept over any number of grid changes)
-  // written over them, and the vertices a hand holds held again. What falls outside the new
-  // grid is dropped, and the note says so.
+  // A new grid (grid.js): pins keep their meaning, row and column; the pins a person set or
+  // removed are written over the new scene's, and the vertices a hand holds held again. What
+  // falls outside the new grid is dropped, and the note says so.
   function regrid(p, note) {
-    const oldCols = state.cloth.cols;
-    function moved(k) {
-      const r = Math.floor(k / oldCols), c = k - r * oldCols;
-      return r < p.rows && c < p.cols ? r * p.cols + c : -1;
-    }
-    function place(k) { return 'row ' + Math.floor(k / oldCols) + ' column ' + (k % oldCols); }
+    const m = window.clothGrid.mover(state.cloth.cols, p.cols, p.rows);
     const dropped = [];
     let obj, view, preset = state.preset;
     if (preset !== 'custom') {
@@ -452,55 +445,21 @@
       obj = made.scene; view = made.view;
       if (state.compare.length) obj.compare = state.compare;
     } else {
-      obj = withSettings(state.sceneObj, p);
-      obj.cols = p.cols; obj.rows = p.rows;
-      delete obj.frames;      // a new grid is a new scene, not the recording it came from
-      obj.pins = [];
-      state.cloth.scene.pins.forEach(function (k) {
-        const m = moved(k);
-        if (m >= 0) obj.pins.push(m); else dropped.push('pin at ' + place(k));
-      });
-      if (Array.isArray(state.sceneObj.actions)) {
-        let lost = 0;
-        obj.actions = [];
-        state.sceneObj.actions.forEach(function (a) {
-          // a set has no vertex, and a cut is a blade in the world: both stay as they are
-          if (a.op === 'set' || a.op === 'cut') { obj.actions.push(a); return; }
-          const m = moved(a.vertex);
-          if (m >= 0) obj.actions.push(Object.assign({}, a, { vertex: m })); else lost++;
-        });
-        if (lost) dropped.push(lost + ' scripted action' + (lost > 1 ? 's' : ''));
-      }
+      obj = window.clothGrid.moveScene(withSettings(state.sceneObj, p), state.cloth.scene.pins, m, p.cols, p.rows, dropped);
       view = scenes.viewFor(obj);
     }
-    const pins = {};
-    obj.pins.forEach(function (k) { pins[k] = true; });
-    const edits = {};
-    Object.keys(state.pinEdits).forEach(function (key) {
-      const k = Number(key), m = moved(k), pinned = state.pinEdits[key];
-      if (m < 0) { if (pinned) dropped.push('your pin at ' + place(k)); return; }
-      edits[m] = pinned;
-      if (pinned) pins[m] = true; else delete pins[m];
-    });
-    obj.pins = Object.keys(pins).map(Number).sort(function (x, y) { return x - y; });
-    const holds = gestures.held().map(function (h) { return { k: moved(h.k), was: h.k, id: h.id }; });
-    const text = JSON.stringify(obj);
+    const edits = window.clothGrid.applyEdits(obj, state.pinEdits, m, dropped);
+    const holds = gestures.held().map(function (h) { return { k: m.moved(h.k), was: h.k, id: h.id }; });
     try {
-      load(text, preset, view, holds);
+      load(JSON.stringify(obj), preset, view, holds);
     } catch (e) {
       ui.setParams(state.params);  // the banner shows why; the old scene runs on
       return;
     }
     state.pinEdits = edits;
-    holds.forEach(function (h) { if (h.k < 0) dropped.push('the held vertex at ' + place(h.was)); });
-    const notes = [];
-    if (note) notes.push(note);
-    if (state.slowWarning) notes.push(state.slowWarning);
-    if (dropped.length) {
-      notes.push('outside the ' + p.cols + '×' + p.rows + ' grid, dropped: ' +
-                 dropped.slice(0, 6).join(', ') + (dropped.length > 6 ? ', …' : ''));
-    }
-    ui.note(notes.join('; '));
+    holds.forEach(function (h) { if (h.k < 0) dropped.push('the held vertex at ' + m.place(h.was)); });
+    const notes = [note, state.slowWarning, window.clothGrid.droppedNote(dropped, p.cols, p.rows)];
+    ui.note(notes.filter(function (t) { return !!t; }).join('; '));
   }
 
   // ---- colour -------------------------------------------------------------
@@ -613,55 +572,27 @@
     if (session.atReplayEnd(sess)) setPaused(true);
   }
 
-  // The overlays' boxes in client pixels (left, top, right, bottom each), measured on a
-  // resize and with each readout, not per frame; an overlay over a held vertex fades.
-  const overlayEls = [document.getElementById('legend'), document.getElementById('hud'),
-                      document.getElementById('charts')];
-  const overlayBox = new Float64Array(4 * overlayEls.length);
-  const overlayUnder = [false, false, false];
-
-  function measureOverlays() {
-    for (let i = 0; i < overlayEls.length; i++) {
-      const r = overlayEls[i].getBoundingClientRect();
-      overlayBox[4 * i] = r.left; overlayBox[4 * i + 1] = r.top;
-      overlayBox[4 * i + 2] = r.right; overlayBox[4 * i + 3] = r.bottom;
-    }
-  }
-
-  function fadeOverlays() {
-    const dragging = gestures.count() > 0 && renderer.ok;
-    for (let i = 0; i < overlayEls.length; i++) {
-      let under = false;
-      if (dragging) {
-        const pad = 24;   // a finger's width around the vertex
-        for (let j = 0; j < state.panels.length && !under; j++) {
-          const c = state.panels[j].cloth, d = state.panels[j].draw;
-          // the held vertex, and its hand (the pointer), which a hand of finite strength's
-          // vertex may lag behind or stop short of
-          for (let k = 0; k < c.n_verts && !under; k++) {
-            if (c.held[k] === 0) continue;
-            for (let which = 0; which < 2 && !under; which++) {
-              const at = which === 0 ? c.pos : c.target;
-              const p = d.toCanvas(at[2 * k], at[2 * k + 1]);
-              const x = canvasBox[0] + p[0], y = canvasBox[1] + p[1];
-              under = x > overlayBox[4 * i] - pad && x < overlayBox[4 * i + 2] + pad &&
-                      y > overlayBox[4 * i + 1] - pad && y < overlayBox[4 * i + 3] + pad;
-            }
-          }
-        }
+  const overlays = window.clothOverlays.create(canvas, [document.getElementById('legend'),
+    document.getElementById('hud'), document.getElementById('charts')], document.getElementById('overlays'));
+  // Every held vertex of every panel, and its hand (which a hand of finite strength's vertex
+  // may lag behind or stop short of), in canvas CSS px, to `visit` until it says stop.
+  function heldPoints(visit) {
+    for (let j = 0; j < state.panels.length; j++) {
+      const c = state.panels[j].cloth, d = state.panels[j].draw;
+      for (let k = 0; k < c.n_verts; k++) {
+        if (c.held[k] === 0) continue;
+        const p = d.toCanvas(c.pos[2 * k], c.pos[2 * k + 1]);
+        if (visit(p[0], p[1])) return true;
+        const q = d.toCanvas(c.target[2 * k], c.target[2 * k + 1]);
+        if (visit(q[0], q[1])) return true;
       }
-      if (under !== overlayUnder[i]) { overlayUnder[i] = under; overlayEls[i].classList.toggle('under', under); }
     }
-  }
-  const canvasBox = new Float64Array(2);
-  function measureCanvas() {
-    const r = canvas.getBoundingClientRect();
-    canvasBox[0] = r.left; canvasBox[1] = r.top;
+    return false;
   }
 
   function render() {
     if (!state.cloth || !renderer.ok || renderer.lost) return;
-    fadeOverlays();
+    overlays.fade(gestures.count() > 0 && renderer.ok, heldPoints);
     if (state.needMeasure) { state.panels.forEach(function (p) { p.cloth.measure(); }); state.needMeasure = false; }
     const t0 = performance.now();
     state.scale = currentScale();
@@ -697,8 +628,7 @@
   function readouts(now) {
     if (now - state.lastReadout < READOUT_MS || !state.cloth) return;
     state.lastReadout = now;
-    measureOverlays();
-    measureCanvas();
+    overlays.measure();
     const c = state.cloth;
     if (state.wanted > 0) state.speed = state.played / state.wanted;
     state.wanted = 0; state.played = 0;
@@ -772,7 +702,7 @@
   // of the canvas, its view fitted above the band).
   function layout() {
     if (!renderer.ok) return;
-    const n = state.panels.length, v = state.view, w = renderer.cssWidth, h = renderer.cssHeight - overlayBand();
+    const n = state.panels.length, v = state.view, w = renderer.cssWidth, h = renderer.cssHeight - overlays.band();
     state.rects = n > 1
       ? window.clothCompare.layout(n, w, h, v.x1 - v.x0, v.y1 - v.y0)
       : [{ x: 0, y: 0, w: w, h: h }];
@@ -788,18 +718,6 @@
   }
 
   const LABEL_HEIGHT = 44;    // CSS px: a panel label's two lines, its padding and offset
-
-  // The height of the band at the stage's foot that the readouts, the legend and the charts
-  // take (CSS px): views are fitted above it, so that they do not cover a cloth at rest. At
-  // most 40% of the canvas: on a small stage a cloth too small to see would be worse. Measured
-  // when the layout changes (a resize, compare mode, the charts shown or hidden), not as the
-  // readouts' numbers change, so the view never jumps under a hand.
-  function overlayBand() {
-    const o = document.getElementById('overlays').getBoundingClientRect();
-    const c = canvas.getBoundingClientRect();
-    if (!(o.height > 0) || !(c.height > 0)) return 0;
-    return Math.max(0, Math.min(c.bottom - o.top + 4, 0.4 * c.height));
-  }
 
   // The panel under a point of the canvas (CSS px), or -1.
   function panelAt(cx, cy) {
@@ -868,8 +786,7 @@
     state.relayouts++;
     layout();
     gestures.reproject();
-    measureOverlays();
-    measureCanvas();
+    overlays.measure();
     state.dirty = true;
   }
 
