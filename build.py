@@ -28,7 +28,7 @@ WEBGL = os.path.join(ROOT, 'webgl')
 DIST_HTML = os.path.join(ROOT, 'dist', 'index.html')
 
 # The hand-written page, in load order. Every webgl/*.js must be listed here.
-SCRIPTS = ['core.js', 'options.js', 'scenes.js', 'grid.js', 'fields.js', 'runner.js', 'share.js',
+SCRIPTS = ['core.js', 'options.js', 'scenes.js', 'params.js', 'grid.js', 'fields.js', 'runner.js', 'share.js',
            'renderer.js', 'gestures.js', 'input.js', 'canvas2d.js', 'blade.js', 'charts.js', 'overlays.js',
            'compare.js', 'ui.js', 'app.js']
 STYLES = ['style.css']

@@ -33,6 +33,7 @@
   const EMA = 0.1;             // smoothing of the timing readouts
 
   const core = window.clothCore, scenes = window.clothScenes, runner = window.clothRunner;
+  const params = window.clothParams;
   const canvas = document.getElementById('view');
   const options = window.clothOptions.parse(window.location.search, scenes.PRESETS);
   const own = window.clothOptions.own;
@@ -116,32 +117,8 @@
   // ---- scenes -------------------------------------------------------------
 
   // The settings the panel shows, as a cloth has them now.
-  function paramsOf(cloth) {
-    return { cols: cloth.cols, rows: cloth.rows, iterations: cloth.iterations,
-             substeps: cloth.substeps, gravity: cloth.scene.gravity_y,
-             damping: cloth.scene.damping, solver: cloth.scene.solver, tear: cloth.tear,
-             material: scenes.materialOf(cloth.scene.density, cloth.scene.compliance) };
-  }
-
-  // The page's limits for a scene and each of its panels (a panel costs what its scene
-  // does, and N panels N times one); '' when it can run.
-  function limitOf(obj) {
-    const list = Array.isArray(obj.compare) ? obj.compare : [];
-    if (list.length === 0) return scenes.pageLimit(obj);
-    let work = 0;
-    for (let i = 0; i < list.length; i++) {
-      const one = Object.assign({}, obj, list[i]);
-      delete one.compare;
-      const limit = scenes.pageLimit(one);
-      if (limit) return 'panel ' + (i + 1) + ': ' + limit;
-      work += scenes.workOf(one);
-    }
-    if (work > scenes.PAGE_LIMITS.work) {
-      return 'its ' + list.length + ' panels need about ' + work.toExponential(1) + ' edge updates a frame, ' +
-        'and the page takes at most ' + scenes.PAGE_LIMITS.work.toExponential(0) + ' (fewer panels, substeps or iterations)';
-    }
-    return '';
-  }
+  function paramsOf(cloth) { return params.of(cloth.scene, cloth.cols, cloth.rows); }
+  const limitOf = params.limitOf, withSettings = params.written;
 
   // Load scene JSON text. On a bad scene: show the message, keep the old scene
   // running, and throw an Error with the core's message.
@@ -379,37 +356,11 @@
     retune(Object.assign({}, state.params, { material: name }), '');
   }
 
-  // The scene with the settings of p (those the panel shows) written into it.
-  function withSettings(obj, p) {
-    const out = Object.assign({}, obj);
-    out.iterations = p.iterations;
-    out.substeps = p.substeps;
-    out.solver = p.solver;
-    out.damping = p.damping;
-    out.gravity = [Array.isArray(obj.gravity) ? obj.gravity[0] : 0, p.gravity];
-    if (p.tear > 0) out.tear = p.tear; else delete out.tear;
-    if (own(scenes.MATERIALS, p.material)) {
-      out.density = scenes.MATERIALS[p.material].density;
-      out.compliance = scenes.MATERIALS[p.material].compliance;
-    }
-    return out;
-  }
-
   // New settings for the running cloth (the core's set: cloth/api.py set_settings, what a
   // recorded `set` action replays), in every panel: keys a panel has of its own are set too,
   // as the recording's `set` sets them; a rejected one leaves everything as it was.
   function retune(p, note) {
-    const keys = {};
-    if (p.iterations !== state.params.iterations) keys.iterations = p.iterations;
-    if (p.substeps !== state.params.substeps) keys.substeps = p.substeps;
-    if (p.solver !== state.params.solver) keys.solver = p.solver;
-    if (p.damping !== state.params.damping) keys.damping = p.damping;
-    if (p.gravity !== state.params.gravity) keys.gravity = [state.base.scene.gravity_x, p.gravity];
-    if (p.tear !== state.params.tear) keys.tear = p.tear > 0 ? p.tear : null;
-    if (p.material !== state.params.material && own(scenes.MATERIALS, p.material)) {
-      keys.density = scenes.MATERIALS[p.material].density;
-      keys.compliance = scenes.MATERIALS[p.material].compliance;
-    }
+    const keys = params.changed(state.params, p, state.base.scene.gravity_x);
     const obj = withSettings(state.sceneObj, p);
     try {
       const limit = limitOf(obj);

@@ -1,0 +1,71 @@
+// The settings the panel shows (params: cols, rows, iterations, substeps, gravity, damping,
+// solver, tear, material): read from a cloth's scene, written into a scene object, and the
+// scene keys a change of them sets; and the page's limits for a scene and its panels. Pure:
+// data in, data out (the app applies them through the session).
+'use strict';
+
+window.clothParams = (function () {
+  const scenes = window.clothScenes, own = window.clothOptions.own;
+
+  // The params as a cloth's scene has them now (the scene it runs, settings set live included).
+  function of(scene, cols, rows) {
+    return { cols: cols, rows: rows, iterations: scene.iterations, substeps: scene.substeps,
+             gravity: scene.gravity_y, damping: scene.damping, solver: scene.solver, tear: scene.tear,
+             material: scenes.materialOf(scene.density, scene.compliance) };
+  }
+
+  // The scene object with params p written into it.
+  function written(obj, p) {
+    const out = Object.assign({}, obj);
+    out.iterations = p.iterations;
+    out.substeps = p.substeps;
+    out.solver = p.solver;
+    out.damping = p.damping;
+    out.gravity = [Array.isArray(obj.gravity) ? obj.gravity[0] : 0, p.gravity];
+    if (p.tear > 0) out.tear = p.tear; else delete out.tear;
+    if (own(scenes.MATERIALS, p.material)) {
+      out.density = scenes.MATERIALS[p.material].density;
+      out.compliance = scenes.MATERIALS[p.material].compliance;
+    }
+    return out;
+  }
+
+  // The scene keys that take a running cloth from params `was` to `p` (a `set` action's
+  // `scene`); gx: the scene's gravity along x, which the panel does not show.
+  function changed(was, p, gx) {
+    const keys = {};
+    if (p.iterations !== was.iterations) keys.iterations = p.iterations;
+    if (p.substeps !== was.substeps) keys.substeps = p.substeps;
+    if (p.solver !== was.solver) keys.solver = p.solver;
+    if (p.damping !== was.damping) keys.damping = p.damping;
+    if (p.gravity !== was.gravity) keys.gravity = [gx, p.gravity];
+    if (p.tear !== was.tear) keys.tear = p.tear > 0 ? p.tear : null;
+    if (p.material !== was.material && own(scenes.MATERIALS, p.material)) {
+      keys.density = scenes.MATERIALS[p.material].density;
+      keys.compliance = scenes.MATERIALS[p.material].compliance;
+    }
+    return keys;
+  }
+
+  // The page's limits for a scene object and each of its panels (a panel costs what its
+  // scene does, and N panels N times one); '' when it can run.
+  function limitOf(obj) {
+    const list = Array.isArray(obj.compare) ? obj.compare : [];
+    if (list.length === 0) return scenes.pageLimit(obj);
+    let work = 0;
+    for (let i = 0; i < list.length; i++) {
+      const one = Object.assign({}, obj, list[i]);
+      delete one.compare;
+      const limit = scenes.pageLimit(one);
+      if (limit) return 'panel ' + (i + 1) + ': ' + limit;
+      work += scenes.workOf(one);
+    }
+    if (work > scenes.PAGE_LIMITS.work) {
+      return 'its ' + list.length + ' panels need about ' + work.toExponential(1) + ' edge updates a frame, ' +
+        'and the page takes at most ' + scenes.PAGE_LIMITS.work.toExponential(0) + ' (fewer panels, substeps or iterations)';
+    }
+    return '';
+  }
+
+  return { of: of, written: written, changed: changed, limitOf: limitOf };
+})();
