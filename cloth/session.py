@@ -18,11 +18,12 @@ frame, which is where `run` applies an action of frame f that comes after them i
 """
 
 from cloth.host import f64, i32, parse_json, has_key, copy_object, to_json
-from cloth.scene import parse_scene, MAX_ACTIONS, fail
+from cloth.scene import parse_scene, MAX_ACTIONS, OPS, fail
 from cloth.sim import Cloth, grab, move, move_by, release, pin, unpin, cut, frame
 from cloth.script import apply_due, drop_actions_after, apply_settings
 
-# The recording's ops: an action is kept as its code.
+# The recording's ops: an action is kept as its code, its index in scene.OPS, or past them the
+# two forms compare mode records.
 GRAB = 0          # grab at (x, y)
 MOVE = 1          # move to (x, y)
 RELEASE = 2
@@ -161,8 +162,7 @@ def recorded(rec, i):
         return {'frame': f, 'op': 'grab', 'vertex': k, 'to': [rec.x_of[i], rec.y_of[i]]}
     if op == MOVE:
         return {'frame': f, 'op': 'move', 'vertex': k, 'to': [rec.x_of[i], rec.y_of[i]]}
-    names = ['', '', 'release', 'pin', 'unpin']
-    return {'frame': f, 'op': names[op], 'vertex': k}
+    return {'frame': f, 'op': OPS[op], 'vertex': k}
 
 
 def scripted(a):

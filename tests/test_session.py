@@ -137,3 +137,10 @@ def test_the_recording_stops_where_it_is_complete_at_the_scene_formats_limit():
     assert len(rec['actions']) == MAX_ACTIONS and rec['frames'] == frames < s.frame
     assert all(a['frame'] <= frames for a in rec['actions'])
     run(ses.recording_text(s))               # a scene the core takes
+
+
+def test_the_recordings_codes_are_the_scene_formats_ops():
+    from cloth.scene import OPS
+    for name in OPS:
+        assert OPS[getattr(ses, name.upper())] == name
+    assert min(ses.GRAB_HERE, ses.MOVE_BY) >= len(OPS)

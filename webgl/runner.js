@@ -42,7 +42,7 @@ window.clothRunner = (function () {
   // its cloth, its operations, and the timing of its last batch.
   function panel(session, i) {
     const cloth = session.panels[i];
-    return { cloth: cloth, ops: core.ops(cloth), next: 0, frame: session.frame, ms: 0, proj: 0 };
+    return { cloth: cloth, ops: core.ops(cloth), frame: session.frame, ms: 0, proj: 0 };
   }
 
   // Run up to `frames` frames of session panel i (r = panel(session, i)), each followed by
