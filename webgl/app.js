@@ -31,6 +31,7 @@
   const SLOW_MOTION = 0.9;     // below this share of real time, the readout says "slow motion"
   const READOUT_MS = 250;      // readout refresh period
   const EMA = 0.1;             // smoothing of the timing readouts
+  const CAPPED_NOTE_MS = 3000; // the max_speed note is said at most this often
 
   const core = window.clothCore, scenes = window.clothScenes, runner = window.clothRunner;
   const params = window.clothParams;
@@ -56,6 +57,8 @@
     linkPending: false, // a link is being copied (the clipboard answers later)
     slowWarning: '',    // what load() warned of a scene too heavy for real time ('' for none)
     relayouts: 0,       // how many times the views were laid out again (info(): the tests)
+    cappedAt: -Infinity, // when the max_speed note was last said (performance.now ms)
+    replaying: false,   // a replay was playing when the last note about it was said
   };
   // The scene's panels, their scripts, the recording and the replay: clothCore.session (the
   // core's cloth/session.py). Every gesture and setting goes to it, which applies it to every
@@ -184,6 +187,7 @@
       'This scene needs about ' + work.toExponential(1) + ' edge updates a frame: ' +
       'expect slow motion on an ordinary machine' : '';
     if (state.slowWarning) ui.note(state.slowWarning);
+    state.replaying = sess.replay_end > 0;
     if (sess.replay_end === 0) { session.atReplayEnd(sess); setPaused(true); }
     else if (sess.replay_end > 0) setPaused(false);
     return state.cloth;
@@ -212,6 +216,10 @@
   // cutting its script at this frame): a replay that had ended runs again.
   function acted() {
     if (sess.resumed) { sess.resumed = false; setPaused(false); }
+    if (state.replaying && sess.replay_end < 0) {
+      state.replaying = false;
+      ui.note('You took over the replay at frame ' + sess.frame + ': recording from here');
+    }
     state.needMeasure = true;
     state.dirty = true;
   }
@@ -370,7 +378,7 @@
         acted();
       }
     } catch (e) {
-      ui.error('Setting not applied: ' + e.message + ' (the cloth runs on as it was)');
+      ui.error('Setting not applied: ' + e.message + ' (the cloth runs on as it was)', 'setting');
       ui.setParams(state.params);
       ui.setSolver(state.params.solver);
       return;
@@ -380,6 +388,7 @@
     state.params = paramsOf(state.base);
     ui.setParams(state.params);
     ui.setSolver(state.params.solver);
+    ui.clearError('setting');     // a refused setting's banner ends with one that applies
     ui.note(note);
     state.dirty = true;
   }
@@ -498,9 +507,15 @@
       // The core's max_speed safety net engaged. Say so rather than let it pass silently,
       // and say why: a hand that moved faster than the cloth can follow (metres in a frame),
       // or settings that pump energy (one sweep per step on an undamped grid).
+      // At most once every CAPPED_NOTE_MS: settings that cap every frame (a tiny max_speed)
+      // would otherwise hide every other note, a refused field's among them.
       if (p.cloth.clamped > p.clamped) {
         p.clamped = p.cloth.clamped;
-        ui.note((state.panels.length > 1 ? 'Panel ' + (i + 1) + ': ' : '') + cappedNote(p.cloth));
+        const now = performance.now();
+        if (!(now - state.cappedAt < CAPPED_NOTE_MS)) {
+          state.cappedAt = now;
+          ui.note((state.panels.length > 1 ? 'Panel ' + (i + 1) + ': ' : '') + cappedNote(p.cloth));
+        }
       }
     }
     state.needMeasure = false;
@@ -520,7 +535,7 @@
   }
 
   function atReplayEnd() {
-    if (session.atReplayEnd(sess)) setPaused(true);
+    if (session.atReplayEnd(sess)) { state.replaying = false; setPaused(true); }
   }
 
   const overlays = window.clothOverlays.create(canvas, [document.getElementById('legend'),

@@ -1,0 +1,40 @@
+"""What the page says stays true (found by a fresh try of the page, 2026-12-04): a refused
+setting's banner ends with the next setting that applies; a person who takes over a replay is
+told so, and the replay's note goes; the max_speed note does not hide every other note."""
+import json
+
+from browser_helpers import load_paused
+
+
+def test_a_refused_settings_banner_ends_with_the_next_setting_that_applies(open_page):
+    pg = open_page()
+    load_paused(pg, json.dumps({'cols': 200, 'rows': 200, 'spacing': 0.01, 'pins': [0, 199]}))
+    pg.js("clothApp.setParam('iterations', '200')")
+    assert pg.info()['error'].startswith('Setting not applied')
+    pg.js("clothApp.setParam('damping', '2')")
+    assert pg.info()['error'] == ''
+    assert pg.info()['params']['damping'] == 2
+
+
+def test_taking_over_a_replay_says_so(open_page):
+    pg = open_page()
+    load_paused(pg, json.dumps({'cols': 10, 'rows': 8, 'spacing': 0.1, 'pins': [0, 9], 'frames': 200}))
+    pg.js('clothApp.setPaused(false)')
+    assert pg.info()['replay']['playing']
+    pg.js('clothApp.setPaused(true)')
+    pg.js('clothApp.advance(20)')
+    x, y = pg.state()['screen'][45]
+    pg.page.mouse.click(x, y, button='right')
+    info = pg.info()
+    assert not info['replay']['playing']
+    assert 'took over the replay at frame' in info['note'], info['note']
+
+
+def test_the_max_speed_note_does_not_hide_a_refused_field(open_page):
+    pg = open_page()
+    load_paused(pg, json.dumps({'cols': 10, 'rows': 8, 'spacing': 0.1, 'pins': [0], 'max_speed': 0.01}))
+    pg.js('clothApp.advance(10)')
+    assert 'max_speed of 0.01' in pg.info()['note']
+    pg.js("clothApp.setParam('iterations', 'abc')")
+    pg.js('clothApp.advance(10)')            # still capped every frame
+    assert 'Iterations: not a number' in pg.info()['note'], pg.info()['note']
