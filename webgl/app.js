@@ -204,10 +204,23 @@
       gestures.held().forEach(function (h) { if (sess.person[h.k] === 0) gestures.forget(h.k); });
     }
     sess.script_set = false;
+    followSets();
     ui.setParams(state.params);
     ui.setSolver(state.params.solver);
     state.needMeasure = true;
     state.dirty = true;
+  }
+
+  // A set (the Scene section's or a script's) is written into every panel, the keys a panel
+  // has of its own included: the compare list, its editor and a later grid change follow what
+  // the panels run (params.running). Returns whether the list changed.
+  function followSets() {
+    if (!state.compare.length) return false;
+    const now = params.running(state.compare, state.panels.map(function (p) { return p.cloth.scene; }));
+    if (JSON.stringify(now) === JSON.stringify(state.compare)) return false;
+    state.compare = now;
+    compareUI.render(now);
+    return true;
   }
 
   // ---- replay, recording, sharing ---------------------------------------------
@@ -383,6 +396,10 @@
       ui.setSolver(state.params.solver);
       return;
     }
+    if (followSets()) {
+      obj.compare = state.compare;
+      note = (note ? note + '; ' : '') + 'set in every panel, over the panels\' own values (the compare editor shows what each runs)';
+    }
     state.sceneObj = obj;
     state.sceneText = JSON.stringify(obj);   // Reset restarts with the new settings
     state.params = paramsOf(state.base);
@@ -406,6 +423,7 @@
       if (state.compare.length) obj.compare = state.compare;
     } else {
       obj = window.clothGrid.moveScene(withSettings(state.sceneObj, p), state.cloth.scene.pins, m, p.cols, p.rows, dropped);
+      if (state.compare.length) obj.compare = state.compare;   // as the panels run (followSets)
       view = scenes.viewFor(obj);
     }
     const edits = window.clothGrid.applyEdits(obj, state.pinEdits, m, dropped);

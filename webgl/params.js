@@ -47,6 +47,22 @@ window.clothParams = (function () {
     return keys;
   }
 
+  // The compare list as the panels run it: each entry's keys read from its panel's scene
+  // (`scenes`, one per entry). A `set` (the Scene section's or a script's) is written into
+  // every panel, the keys a panel has of its own included, as the recording replays it; the
+  // editor and a later grid change follow what runs rather than what the panels began with.
+  function running(list, panelScenes) {
+    return list.map(function (entry, i) {
+      const out = {};
+      Object.keys(entry).forEach(function (key) {
+        const v = panelScenes[i][key];
+        // A key whose 0 means none (tearing, a density) is null for none, as the editor writes it.
+        out[key] = v === 0 && own(scenes.LIMITS, key) && scenes.LIMITS[key].off ? null : v;
+      });
+      return out;
+    });
+  }
+
   // The page's limits for a scene object and each of its panels (a panel costs what its
   // scene does, and N panels N times one); '' when it can run.
   function limitOf(obj) {
@@ -67,5 +83,5 @@ window.clothParams = (function () {
     return '';
   }
 
-  return { of: of, written: written, changed: changed, limitOf: limitOf };
+  return { of: of, written: written, changed: changed, running: running, limitOf: limitOf };
 })();

@@ -277,6 +277,44 @@ def test_panel_settings_in_the_editor(open_page):
     assert json.loads(panels(pg)[0]['scene'])['tethers'] is False
 
 
+def editor_values(pg, key):
+    return pg.js('(k) => Array.from(document.querySelectorAll(`#compare-list [data-key=${k}]`)).map((e) => e.value)', key)
+
+
+def test_a_scene_setting_in_compare_mode_shows_in_the_editor_and_survives_a_grid_change(open_page):
+    # A Scene-section setting is a `set`, written into every panel over the panels' own values
+    # (as the recording replays it): the editor shows what each panel runs, and a grid change,
+    # a Reset and a replay's own `set` keep to that rule instead of restoring the old values.
+    pg = open_page()
+    pg.js('(l) => clothApp.compare(l)', PAIR)
+    pg.js('clothApp.setPaused(true)')
+    pg.js('clothApp.advance(10)')
+    field = pg.locator('#iterations')
+    field.fill('7')
+    field.press('Enter')
+    assert [json.loads(p['scene'])['iterations'] for p in panels(pg)] == [7, 7]
+    assert editor_values(pg, 'iterations') == ['7', '7']
+    assert 'every panel' in pg.info()['note']
+    recorded = pg.js('clothApp.recording()')
+    field = pg.locator('#cols')
+    field.fill('24')
+    field.press('Enter')
+    ps = panels(pg)
+    assert len(ps[0]['positions']) == 24 * 30
+    assert [json.loads(p['scene'])['iterations'] for p in ps] == [7, 7]
+    assert [json.loads(p['scene'])['solver'] for p in ps] == ['jakobsen', 'xpbd']   # untouched keys stay
+    assert editor_values(pg, 'iterations') == ['7', '7']
+    pg.js('clothApp.reset()')
+    assert [json.loads(p['scene'])['iterations'] for p in panels(pg)] == [7, 7]
+    # The recording made before the grid change: its `set` at frame 10, replayed, moves the
+    # editor at that frame, not before.
+    pg.js('(t) => clothApp.loadScene(t)', recorded)
+    pg.js('clothApp.setPaused(true)')
+    assert editor_values(pg, 'iterations') == ['20', '1']
+    pg.js('clothApp.advance(12)')
+    assert editor_values(pg, 'iterations') == ['7', '7']
+
+
 # Issue #22.6: the number being compared stays in sight at every size and panel count.
 LONGEST = {'solver': 'xpbd', 'substeps': 12, 'iterations': 3, 'tethers': True, 'shear': True,
            'compliance': 0.00123, 'tolerance': 0.00001}
