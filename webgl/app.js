@@ -102,6 +102,7 @@
   const compareUI = window.clothCompare.create({
     change: function (list, note) { setCompare(list, note); },
     note: function (text) { ui.note(text); },
+    running: function (i, key) { return i < state.panels.length ? state.panels[i].cloth.scene[key] : null; },
   });
   const charts = window.clothCharts.create(document.getElementById('charts'));
 

@@ -108,7 +108,9 @@ window.clothCompare = (function () {
       const f = LIMITS[key];
       const input = document.createElement('input');
       // Empty means "the scene's" (clothFields: text fields, read one way).
-      window.clothFields.attach(input, key, function (text) { edit(i, key, text); });
+      // An arrow key in an empty field steps from what the panel runs.
+      window.clothFields.attach(input, key, function (text) { edit(i, key, text); },
+                                function () { return h.running(i, key); });
       input.placeholder = 'scene';
       input.value = value === undefined ? '' : String(value);
       input.setAttribute('aria-label', 'Panel ' + (i + 1) + ' ' + f.label);

@@ -75,6 +75,29 @@ def test_arrow_keys_step_a_field_within_its_range(open_page):
     assert pg.info()['params']['substeps'] == 15
 
 
+def test_an_arrow_key_in_an_empty_field_steps_from_what_it_stands_for(open_page):
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    assert pg.info()['params']['tear'] == 0 and pg.input_value('#tear') == ''
+    pg.locator('#tear').press('ArrowDown')          # below none is none
+    assert pg.info()['params']['tear'] == 0
+    pg.locator('#tear').press('ArrowUp')            # none steps up to the least limit
+    assert pg.info()['params']['tear'] == 0.01 and pg.input_value('#tear') == '0.01'
+    pg.locator('#tear').press('ArrowUp')
+    assert pg.info()['params']['tear'] == 0.02
+    type_into(pg, '#tear', 'off')
+    assert pg.info()['params']['tear'] == 0
+    pg.locator('#tear').press('ArrowUp')
+    assert pg.info()['params']['tear'] == 0.01
+    # The compare editor's empty field is the panel's running value: panel 2 (the default
+    # solver) runs 8 substeps without naming them.
+    pg.js("clothApp.compare([{solver: 'jakobsen'}, {solver: 'xpbd'}])")
+    sel = '#compare-list input[data-key=substeps] >> nth=1'
+    assert pg.input_value(sel) == ''
+    pg.locator(sel).press('ArrowUp')
+    assert json.loads(pg.js('clothApp.panels()')[1]['scene'])['substeps'] == 9
+
+
 def test_the_compare_editor_reads_numbers_the_same_way(open_page):
     pg = open_page()
     pg.locator('#btn-compare-pair').click()
