@@ -871,6 +871,8 @@
     setCutTool: setCutTool,
     reset: reset,
     cloth: function () { return state.cloth; },
+    // What the charts wrote at their last draw: [text, x, y, width, box x, y, w, h].
+    chartTexts: function () { return charts.written(); },
     // RGBA at client coordinates, read right after a fresh draw.
     pixels: function (points) {
       render();

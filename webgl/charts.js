@@ -36,12 +36,23 @@ window.clothCharts = (function () {
       return true;
     }
 
+    // What the last draw wrote: [text, x, y, width, box x, y, w, h] CSS px (the tests hold
+    // every text inside its chart).
+    const written = [];
+    const LINE = 12;                 // px a line of text takes (10 px font, top baseline)
+    let box = [0, 0, 0, 0];
+    function text(t, x, y) {
+      ctx.fillText(t, x, y);
+      written.push([t, x, y, ctx.measureText(t).width].concat(box));
+    }
+
     // One chart in the box (x, y, w, h), CSS px. value(i, j): series i's j-th oldest sample
     // mapped to [0, 1] of the axis (NaN: no point).
     function plot(x, y, w, h, title, lo, hi, map, now) {
       ctx.strokeStyle = '#2c313b';
       ctx.lineWidth = 1;
       ctx.strokeRect(x + 0.5, y + 0.5, w - 1, h - 1);
+      box = [x, y, w, h];
       ctx.fillStyle = '#8b93a3';
       ctx.font = '10px ui-monospace, Menlo, Consolas, monospace';
       ctx.textBaseline = 'top';
@@ -49,22 +60,24 @@ window.clothCharts = (function () {
       ctx.beginPath();
       ctx.rect(x, y, w, h);
       ctx.clip();
-      ctx.fillText(title, x + 3, y + 2);
-      // the current values, one per panel in its colour
-      let tx = x + 6 + ctx.measureText(title).width;
+      text(title, x + 3, y + 2);
+      // The current values, one per panel in its colour, after the title; a value that would
+      // run past the box starts a line of its own (four panels in a narrow box).
+      let tx = x + 6 + ctx.measureText(title).width, ty = y + 2;
       for (let i = 0; i < series && count > 0; i++) {
-        const text = now(i);
+        const value = now(i), vw = ctx.measureText(value).width;
+        if (tx + vw > x + w - 3 && tx > x + 3) { tx = x + 3; ty += LINE; }
         ctx.fillStyle = COLORS[i];
-        ctx.fillText(text, tx, y + 2);
-        tx += ctx.measureText(text).width + 6;
+        text(value, tx, ty);
+        tx += vw + 6;
       }
       ctx.fillStyle = '#8b93a3';
-      ctx.textBaseline = 'alphabetic';
-      // The axis' top label goes a line lower where the values reach it (four panels).
+      // The axis' top label: at the right of the values' last line, or below it where they
+      // reach it.
       const hiW = ctx.measureText(hi).width;
-      ctx.fillText(hi, x + w - hiW - 3, tx - 6 > x + w - hiW - 6 ? y + 24 : y + 12);
-      ctx.fillText(lo, x + w - ctx.measureText(lo).width - 3, y + h - 3);
-      ctx.fillText('−' + WINDOW + ' s', x + 3, y + h - 3);
+      text(hi, x + w - hiW - 3, tx - 6 > x + w - hiW - 6 ? ty + LINE : ty);
+      text(lo, x + w - ctx.measureText(lo).width - 3, y + h - LINE);
+      text('−' + WINDOW + ' s', x + 3, y + h - LINE);
       for (let i = 0; i < series; i++) {
         ctx.strokeStyle = COLORS[i];
         ctx.lineWidth = 1.25;
@@ -107,6 +120,7 @@ window.clothCharts = (function () {
       const box = window.clothCanvas2d.fit(canvas, ctx);
       const cssW = box.w, cssH = box.h;
       ctx.clearRect(0, 0, cssW, cssH);
+      written.length = 0;
       let top = 0;
       for (let i = 0; i < series; i++) {
         for (let j = 0; j < count; j++) { const v = ms[i][j]; if (v > top) top = v; }
@@ -125,7 +139,7 @@ window.clothCharts = (function () {
     }
 
     return { reset: reset, sample: sample, draw: draw, latest: latest, color: function (i) { return COLORS[i]; },
-             count: function () { return count; } };
+             count: function () { return count; }, written: function () { return written.slice(); } };
   }
 
   return { create: create, COLORS: COLORS, WINDOW: WINDOW, SAMPLE_MS: SAMPLE_MS };

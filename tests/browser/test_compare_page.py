@@ -195,6 +195,22 @@ def test_the_charts_draw(open_page):
     assert pg.locator('#charts').is_hidden()
 
 
+@pytest.mark.parametrize('size', [(800, 600), (1366, 768), (430, 932)])
+def test_every_chart_text_stays_inside_its_chart_with_four_panels(open_page, size):
+    pg = open_page(viewport={'width': size[0], 'height': size[1]})
+    pg.js("clothApp.compare([{solver: 'jakobsen'}, {solver: 'xpbd'}, {substeps: 3}, {iterations: 3}])")
+    pg.locator('#charts-on').check()
+    pg.js('clothApp.setPaused(true)')
+    pg.locator('#view').click(position={'x': 5, 'y': 5})
+    for _ in range(3):
+        pg.keyboard.press('s')                  # a frame stepped by hand is charted and drawn
+    texts = pg.js('clothApp.chartTexts()')
+    values = [t for t in texts if 'e-' in t[0] or t[0].replace('.', '').isdigit()]
+    assert len(values) >= 8, texts               # four panels' values in each chart
+    for t, x, y, w, bx, by, bw, bh in texts:
+        assert bx <= x and x + w <= bx + bw + 0.5 and by <= y and y + 10 <= by + bh, (t, x, y, w, bx, by, bw, bh)
+
+
 def test_compare_mode_recording_replays_per_panel_and_a_link_reopens_it(open_page):
     pg = open_page()
     pg.js('(t) => clothApp.loadScene(t)', json.dumps({'cols': 20, 'rows': 15, 'spacing': 0.1,
