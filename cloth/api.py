@@ -7,7 +7,8 @@ returns, and the parity tests compare its CPython and browser results number for
 from cloth.host import to_json, kind_of, is_finite, parse_json
 from cloth.scene import (parse_scene, fail, MAX_FRAMES, MATERIALS,
                          DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large, KEYS, SOLVERS,
-                         DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES)
+                         DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES,
+                         unused_settings)
 from cloth.sim import Cloth, count_edges, frame, measure, grab, move, move_by, release, pin, unpin, cut, \
     nearest
 from cloth.script import apply_settings, apply_due as due
@@ -50,6 +51,11 @@ def schema():
     most panels, most vertices]. The page derives its fields, the compare editor and the
     recorder from these, so that a key is declared once."""
     return [KEYS, SOLVERS, DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES]
+
+
+def unused(cloth):
+    """What of the cloth's settings its solver does not use, in words ('' for none)."""
+    return unused_settings(cloth.scene)
 
 
 def edges_of(cols, rows, shear):

@@ -320,6 +320,16 @@ def too_large():
             str(MAX_SCENE_BYTES // (1024 * 1024)) + ' MiB), the limit for any scene')
 
 
+def unused_settings(scene):
+    """What of a scene's settings its solver does not use, in words ('' for none): the seed's
+    solver holds every edge at its rest length whatever the material, and with every vertex
+    of the same mass under gravity alone, a density changes nothing either."""
+    if scene.solver == 'jakobsen' and (scene.compliance > 0.0 or scene.density > 0.0):
+        return ('the seed\'s solver (Jakobsen) holds every edge at its rest length: a material '
+                'has no effect under it (the default solver honours it)')
+    return ''
+
+
 def parse_scene(text, panel=-1):
     """JSON text -> Scene, or SceneError naming the offending key. With `panel` >= 0, the
     scene of that panel of its `compare` list: the scene with the panel's keys written in."""

@@ -401,6 +401,9 @@
       obj.compare = state.compare;
       note = (note ? note + '; ' : '') + 'set in every panel, over the panels\' own values (the compare editor shows what each runs)';
     }
+    // A Solver or Material change that leaves a material unused says so (cloth/scene.py).
+    const unused = keys.solver !== undefined || keys.compliance !== undefined ? core.unused(state.base) : '';
+    if (unused) note = (note ? note + '; ' : '') + unused.charAt(0).toUpperCase() + unused.slice(1);
     state.sceneObj = obj;
     state.sceneText = JSON.stringify(obj);   // Reset restarts with the new settings
     state.params = paramsOf(state.base);

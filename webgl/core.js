@@ -60,6 +60,8 @@ window.clothCore = (function (api) {
     setSettings: wrap(function (cloth, text) { return api.set_settings(cloth, text); }),
     // materials() -> {list: [[name, label, density kg/m^2, stiffness N/m], ...], preset: name}
     // (cloth/scene.py MATERIALS: the Material control's fabrics, declared there once).
+    // unused(cloth) -> what of its settings its solver does not use, in words ('' for none).
+    unused: function (cloth) { return api.unused(cloth); },
     materials: function () { const m = api.materials(); return { list: m[0], preset: m[1] }; },
     // schema() -> the scene's keys and the limits the page checks against, declared once in
     // cloth/scene.py (KEYS) and read here (cloth/api.py schema): {keys: {name: {kind, min,

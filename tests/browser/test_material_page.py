@@ -50,6 +50,19 @@ def test_the_material_menu_lists_the_cores_fabrics_and_records_a_set(open_page):
     assert pg.js('clothApp.cloth().scene.density') == 0.15
 
 
+def test_the_page_says_when_the_solver_leaves_the_material_unused(open_page):
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    pg.select_option('#solver', 'jakobsen')
+    assert 'a material has no effect under it' in pg.info()['note'], pg.info()['note']
+    pg.select_option('#material', 'spandex')            # a fabric picked under it: said again
+    assert 'a material has no effect under it' in pg.info()['note']
+    pg.select_option('#solver', 'xpbd')
+    assert 'no effect' not in pg.info()['note']
+    pg.select_option('#material', 'cotton')
+    assert 'no effect' not in pg.info()['note']
+
+
 def test_at_rest_the_colours_are_the_curtains_exact_strain(open_page):
     # The Curtain hangs from a rod in jersey: the link below row r carries the rows under it,
     # strain (rows - 1 - r) m g compliance / spacing, from 0 at the hem to 0.58% at the rod.
