@@ -1,6 +1,6 @@
 // The app: runs the loop and wires the session (clothCore.session: the panels' cloths, their
 // scripts, the recording, the replay), renderer, input, charts and UI, and publishes the test
-// seam window.clothApp.
+// seam (seam.js: window.clothApp).
 //
 // Loop: the core advances a fixed dt per frame(); the wall clock appears only
 // here. Elapsed time goes into an accumulator, capped at MAX_GAP (a tab switch
@@ -28,13 +28,12 @@
   const MAX_GAP = 0.25;        // seconds of wall clock counted per animation frame at most
   const MAX_CATCHUP = 4;       // core frames per animation frame at most
   const FRAME_BUDGET_MS = 12;  // simulation time per animation frame at most (one frame always runs)
-  const SLOW_MOTION = 0.9;     // below this share of real time, the readout says "slow motion"
   const READOUT_MS = 250;      // readout refresh period
   const EMA = 0.1;             // smoothing of the timing readouts
   const CAPPED_NOTE_MS = 3000; // the max_speed note is said at most this often
 
   const core = window.clothCore, scenes = window.clothScenes, runner = window.clothRunner;
-  const params = window.clothParams;
+  const params = window.clothParams, stage = window.clothStage;
   const canvas = document.getElementById('view');
   const options = window.clothOptions.parse(window.location.search, scenes.PRESETS);
   const own = window.clothOptions.own;
@@ -74,9 +73,9 @@
     step: function () { setPaused(true); advance(1); sampleCharts(true); },
     reset: function () { reset(); },
     preset: function (name) { usePreset(name); },
-    solver: function (name) { setSolver(name); },
-    material: function (name) { setMaterial(name); },
-    param: function (key, raw) { setParam(key, raw); },
+    solver: function (name) { settings.setSolver(name); },
+    material: function (name) { settings.setMaterial(name); },
+    param: function (key, raw) { settings.setParam(key, raw); },
     mode: function (m) { setColorMode(m || (state.mode === 'strain' ? 'stress' : 'strain')); },
     scaleMode: function (m) { setScaleMode(m || (state.scaleMode === 'auto' ? 'fixed' : 'auto')); },
     fullScale: function (raw) { setFullScale(raw); },
@@ -121,8 +120,7 @@
   // ---- scenes -------------------------------------------------------------
 
   // The settings the panel shows, as a cloth has them now.
-  function paramsOf(cloth) { return params.of(cloth.scene, cloth.cols, cloth.rows); }
-  const limitOf = params.limitOf, withSettings = params.written;
+  const paramsOf = window.clothSettings.paramsOf, limitOf = params.limitOf;
 
   // Load scene JSON text. On a bad scene: show the message, keep the old scene
   // running, and throw an Error with the core's message.
@@ -205,23 +203,11 @@
       gestures.held().forEach(function (h) { if (sess.person[h.k] === 0) gestures.forget(h.k); });
     }
     sess.script_set = false;
-    followSets();
+    settings.followSets();
     ui.setParams(state.params);
     ui.setSolver(state.params.solver);
     state.needMeasure = true;
     state.dirty = true;
-  }
-
-  // A set (the Scene section's or a script's) is written into every panel, the keys a panel
-  // has of its own included: the compare list, its editor and a later grid change follow what
-  // the panels run (params.running). Returns whether the list changed.
-  function followSets() {
-    if (!state.compare.length) return false;
-    const now = params.running(state.compare, state.panels.map(function (p) { return p.cloth.scene; }));
-    if (JSON.stringify(now) === JSON.stringify(state.compare)) return false;
-    state.compare = now;
-    compareUI.render(now);
-    return true;
   }
 
   // ---- replay, recording, sharing ---------------------------------------------
@@ -255,44 +241,15 @@
   }
 
   function exportRecording() {
-    const text = recordingText();
-    share.download(text, recordingName());
-    share.copy(text).then(function () {
-      ui.note('Recording saved as ' + recordingName() + ' and copied');
-    }, function () {
-      ui.note('Recording saved as ' + recordingName() + ' (the browser kept the clipboard closed)');
-    });
-    return text;
+    return share.exportText(recordingText(), recordingName(), ui.note);
   }
 
   function link() {
     return share.linkFor(recordingText());
   }
 
-  // From the key or click handler itself (share.copyLater: WebKit's clipboard needs the
-  // person's task). A link longer than share.MAX_LINK is not copied: the note offers Export.
   function copyLink() {
-    const made = link();
-    const fits = made.then(function (url) {
-      if (url.length > share.MAX_LINK) throw new Error('too long');
-      return url;
-    });
-    return share.copyLater(fits).then(function () {
-      return made.then(function (url) {
-        ui.note('Link copied (' + url.length + ' characters): it replays this recording');
-        return url;
-      });
-    }, function () {
-      return made.then(function (url) {
-        if (url.length > share.MAX_LINK) {
-          ui.note('This recording makes a link of ' + url.length + ' characters, longer than the ' +
-                  share.MAX_LINK + ' a link may have: use Export to save it as a file');
-        } else {
-          window.prompt('Copy this link (the browser kept the clipboard closed):', url);
-        }
-        return url;
-      });
-    });
+    return share.copyLink(recordingText(), ui.note);
   }
 
   function openFile(file) {
@@ -351,99 +308,6 @@
     relayout();
   }
 
-  // Keys that leave the grid as it is apply to the running cloth (core.setSettings): its
-  // positions, speeds, pins and held vertices stay. Columns and rows make a new grid.
-  const GRID_KEYS = { cols: 1, rows: 1 };
-
-  function setParam(key, raw) {
-    const c = scenes.clamp(key, raw);
-    if (c.value === null) { ui.note(c.note); ui.setParams(state.params); return; }
-    const p = Object.assign({}, state.params);
-    p[key] = c.value;
-    if (own(GRID_KEYS, key)) regrid(p, c.note);
-    else retune(p, c.note);
-  }
-
-  // A solver starts from its own substeps and iterations.
-  function setSolver(name) {
-    const d = own(scenes.SOLVERS, name) ? scenes.SOLVERS[name] : null;
-    if (!d) throw new Error('unknown solver: ' + name);
-    retune(Object.assign({}, state.params, { solver: name, substeps: d.substeps, iterations: d.iterations }), '');
-  }
-
-  // A named fabric: its density and stiffness, set like every setting (recorded as a `set` of
-  // density and compliance).
-  function setMaterial(name) {
-    if (!own(scenes.MATERIALS, name)) { ui.setParams(state.params); return; }
-    retune(Object.assign({}, state.params, { material: name }), '');
-  }
-
-  // New settings for the running cloth (the core's set: cloth/api.py set_settings, what a
-  // recorded `set` action replays), in every panel: keys a panel has of its own are set too,
-  // as the recording's `set` sets them; a rejected one leaves everything as it was.
-  function retune(p, note) {
-    const keys = params.changed(state.params, p, state.base.scene.gravity_x);
-    const obj = withSettings(state.sceneObj, p);
-    try {
-      const limit = limitOf(obj);
-      if (limit) throw new Error(limit);
-      if (Object.keys(keys).length) {
-        session.change(sess, JSON.stringify(keys));
-        acted();
-      }
-    } catch (e) {
-      ui.error('Setting not applied: ' + e.message + ' (the cloth runs on as it was)', 'setting');
-      ui.setParams(state.params);
-      ui.setSolver(state.params.solver);
-      return;
-    }
-    if (followSets()) {
-      obj.compare = state.compare;
-      note = (note ? note + '; ' : '') + 'set in every panel, over the panels\' own values (the compare editor shows what each runs)';
-    }
-    // A Solver or Material change that leaves a material unused says so (cloth/scene.py).
-    const unused = keys.solver !== undefined || keys.compliance !== undefined ? core.unused(state.base) : '';
-    if (unused) note = (note ? note + '; ' : '') + unused.charAt(0).toUpperCase() + unused.slice(1);
-    state.sceneObj = obj;
-    state.sceneText = JSON.stringify(obj);   // Reset restarts with the new settings
-    state.params = paramsOf(state.base);
-    ui.setParams(state.params);
-    ui.setSolver(state.params.solver);
-    ui.clearError('setting');     // a refused setting's banner ends with one that applies
-    ui.note(note);
-    state.dirty = true;
-  }
-
-  // A new grid (grid.js): pins keep their meaning, row and column; the pins a person set or
-  // removed are written over the new scene's, and the vertices a hand holds held again. What
-  // falls outside the new grid is dropped, and the note says so.
-  function regrid(p, note) {
-    const m = window.clothGrid.mover(state.cloth.cols, p.cols, p.rows);
-    const dropped = [];
-    let obj, view, preset = state.preset;
-    if (preset !== 'custom') {
-      const made = scenes.make(preset, p);
-      obj = made.scene; view = made.view;
-      if (state.compare.length) obj.compare = state.compare;
-    } else {
-      obj = window.clothGrid.moveScene(withSettings(state.sceneObj, p), state.cloth.scene.pins, m, p.cols, p.rows, dropped);
-      if (state.compare.length) obj.compare = state.compare;   // as the panels run (followSets)
-      view = scenes.viewFor(obj);
-    }
-    const edits = window.clothGrid.applyEdits(obj, state.pinEdits, m, dropped);
-    const holds = gestures.held().map(function (h) { return { k: m.moved(h.k), was: h.k, id: h.id }; });
-    try {
-      load(JSON.stringify(obj), preset, view, holds);
-    } catch (e) {
-      ui.setParams(state.params);  // the banner shows why; the old scene runs on
-      return;
-    }
-    state.pinEdits = edits;
-    holds.forEach(function (h) { if (h.k < 0) dropped.push('the held vertex at ' + m.place(h.was)); });
-    const notes = [note, state.slowWarning, window.clothGrid.droppedNote(dropped, p.cols, p.rows)];
-    ui.note(notes.filter(function (t) { return !!t; }).join('; '));
-  }
-
   // ---- colour -------------------------------------------------------------
 
   function setColorMode(mode) {
@@ -468,28 +332,8 @@
     state.dirty = true;
   }
 
-  // Auto is the seed's normalisation by the frame's maximum, above a floor: solver noise on an
-  // inextensible cloth at rest (1e-7 on a curtain, up to 1e-3 in a slack hang's rows) stays
-  // dark, while a material's own strain (jersey hung 1.5 m: 0.6% at the rod) fills the scale
-  // from the hem to the pins. One scale for every panel: the largest of them, so a colour
-  // means one strain everywhere.
-  const AUTO_FLOOR = 0.002;
+  const AUTO_FLOOR = window.clothReadouts.AUTO_FLOOR;
   document.getElementById('auto-floor').textContent = String(AUTO_FLOOR);
-
-  function frameMax() {
-    let top = 0;
-    for (let i = 0; i < state.panels.length; i++) {
-      const c = state.panels[i].cloth;
-      const v = state.mode === 'stress' ? c.max_stress : c.max_diff;
-      if (v > top) top = v;
-    }
-    return top;
-  }
-
-  function currentScale() {
-    if (state.scaleMode === 'fixed') return state.fullScale;
-    return Math.max(frameMax(), AUTO_FLOOR);
-  }
 
   // ---- stepping and drawing -------------------------------------------------
 
@@ -526,17 +370,14 @@
       p.cloth.measure();
       const ms = p.cloth.asleep ? NaN : p.run.ms / done;
       p.simMs = Number.isFinite(p.simMs) && Number.isFinite(ms) ? p.simMs + EMA * (ms - p.simMs) : ms;
-      // The core's max_speed safety net engaged. Say so rather than let it pass silently,
-      // and say why: a hand that moved faster than the cloth can follow (metres in a frame),
-      // or settings that pump energy (one sweep per step on an undamped grid).
-      // At most once every CAPPED_NOTE_MS: settings that cap every frame (a tiny max_speed)
+      // The core's max_speed safety net engaged: said, with why (readouts.js), at most once every CAPPED_NOTE_MS: settings that cap every frame (a tiny max_speed)
       // would otherwise hide every other note, a refused field's among them.
       if (p.cloth.clamped > p.clamped) {
         p.clamped = p.cloth.clamped;
         const now = performance.now();
         if (!(now - state.cappedAt < CAPPED_NOTE_MS)) {
           state.cappedAt = now;
-          ui.note((state.panels.length > 1 ? 'Panel ' + (i + 1) + ': ' : '') + cappedNote(p.cloth));
+          ui.note((state.panels.length > 1 ? 'Panel ' + (i + 1) + ': ' : '') + window.clothReadouts.cappedNote(p.cloth));
         }
       }
     }
@@ -544,16 +385,6 @@
     state.dirty = true;
     atReplayEnd();
     return done;
-  }
-
-  function cappedNote(cloth) {
-    const speed = cloth.scene.max_speed;
-    const capped = 'speeds were capped at ' + (speed < 1000 ? 'the scene\'s max_speed of ' : 'max_speed, ') + speed + ' m/s';
-    if (cloth.n_held > 0) return 'A very fast drag: ' + capped + ' (the hand moved faster than the cloth can follow)';
-    if (speed < 1000) return capped.charAt(0).toUpperCase() + capped.slice(1);
-    // (Damping does not cure it: measured, 1.8 million capped vertex-steps with damping 1.)
-    return 'Unstable settings: ' + capped + '; use more iterations or substeps' +
-      (cloth.use_xpbd ? '' : ', or the default solver');
   }
 
   function atReplayEnd() {
@@ -583,7 +414,7 @@
     overlays.fade(gestures.count() > 0 && renderer.ok, heldPoints);
     if (state.needMeasure) { state.panels.forEach(function (p) { p.cloth.measure(); }); state.needMeasure = false; }
     const t0 = performance.now();
-    state.scale = currentScale();
+    state.scale = window.clothReadouts.scaleOf(state.panels, state.mode, state.scaleMode, state.fullScale);
     renderer.begin();
     for (let i = 0; i < state.panels.length; i++) {
       const p = state.panels[i];
@@ -611,40 +442,16 @@
     ui.setPaused(state.paused);
   }
 
-  function fmt(v) { return window.clothUI.fmt(v, 4); }
-
+  const hud = window.clothReadouts.create(ui, compareUI, runner);
   function readouts(now) {
     if (now - state.lastReadout < READOUT_MS || !state.cloth) return;
     state.lastReadout = now;
     overlays.measure();
-    const c = state.cloth;
     if (state.wanted > 0) state.speed = state.played / state.wanted;
     state.wanted = 0; state.played = 0;
-    const slow = !state.paused && state.speed < SLOW_MOTION;
-    let simMs = 0;
-    state.panels.forEach(function (p) { if (Number.isFinite(p.simMs)) simMs += p.simMs; });
-    ui.setReadouts({
-      simMs: allAsleep() ? NaN : simMs, renderMs: state.renderMs, fps: state.fps, rms: c.rms_strain, max: c.max_strain,
-      size: c.cols + '×' + c.rows + ' · ' + c.n_edges + (c.n_edges === 1 ? ' edge' : ' edges') +
-        (c.broken > 0 ? ' left of ' + (c.n_edges + c.broken) : '') +
-        (state.panels.length > 1 ? ' · ' + state.panels.length + ' panels' : '') + (allAsleep() ? ' · at rest' : '') +
-        (slow ? ' · slow motion ×' + state.speed.toFixed(2) : ''),
-    });
-    ui.setLegend(state.scale, state.scaleMode === 'fixed' ? 'fixed' : (frameMax() > AUTO_FLOOR ? 'max' : 'floor'));
+    hud.show(state, allAsleep());
     ui.setRecording({ frames: sess.frame, actions: session.recordingCount(sess), full: session.recordingFull(sess),
                       complete: session.recordingComplete(sess), replayEnd: sess.replay_end });
-    if (state.panels.length > 1) {
-      state.panels.forEach(function (p, i) {
-        // A narrow panel (a phone, four panels) gets the short label: the solver and its
-        // steps; the RMS strain and the cost. The numbers come first on their line and are
-        // never cut (compare.js).
-        const r = state.rects[i], small = !r || r.w < 340, label = runner.label(p.cloth);
-        const ms = Number.isFinite(p.simMs) ? p.simMs.toFixed(2) + (small ? ' ms' : ' ms/frame') : 'at rest';
-        compareUI.setLabel(i, (i + 1) + ' · ' + (small ? label.split(',')[0] : label),
-          small ? 'rms ' + fmt(p.cloth.rms_strain) + ' · ' + ms
-                : 'strain rms ' + fmt(p.cloth.rms_strain) + ' · max ' + fmt(p.cloth.max_strain) + ' · ' + ms);
-      });
-    }
   }
 
   // Charts: a sample of each panel every clothCharts.SAMPLE_MS while the simulation runs, and
@@ -686,33 +493,12 @@
 
   // ---- geometry and input ---------------------------------------------------
 
-  // The panels' rectangles for the canvas's size, above the overlays' band (one panel: all
-  // of the canvas, its view fitted above the band).
+  // The panels' rectangles for the canvas's size, above the overlays' band (stage.js).
   function layout() {
     if (!renderer.ok) return;
-    const n = state.panels.length, v = state.view, w = renderer.cssWidth, h = renderer.cssHeight - overlays.band();
-    state.rects = n > 1
-      ? window.clothCompare.layout(n, w, h, v.x1 - v.x0, v.y1 - v.y0)
-      : [{ x: 0, y: 0, w: w, h: h }];
-    state.panels.forEach(function (p, i) {
-      const r = state.rects[i];
-      // A panel's cloth is fitted below its label (two lines, compare.js), where there is room.
-      const top = n > 1 && r.h > 3 * LABEL_HEIGHT ? LABEL_HEIGHT : 0;
-      if (n > 1) p.draw.setRect(r.x, r.y, r.w, r.h);
-      else p.draw.setRect();
-      p.draw.setFit(r.x, r.y + top, r.w, r.h - top);
-    });
-    compareUI.placeLabels(n > 1 ? state.rects : []);
+    state.rects = stage.layout(state.panels, state.view, renderer.cssWidth, renderer.cssHeight - overlays.band());
+    compareUI.placeLabels(state.panels.length > 1 ? state.rects : []);
   }
-
-  const LABEL_HEIGHT = 44;    // CSS px: a panel label's two lines, its padding and offset
-
-  // The panel under a point of the canvas (CSS px), or -1.
-  function panelAt(cx, cy) {
-    for (let i = 0; i < state.panels.length; i++) if (state.panels[i].draw.contains(cx, cy)) return i;
-    return -1;
-  }
-
   // Pointers (input.js) become gestures (gestures.js) on the views below, and a gesture
   // becomes the actions after them: applied at once through the core, in every panel, then
   // recorded at the current frame by the session. A person acting during a replay takes over.
@@ -720,7 +506,7 @@
     // client px -> {panel, x, y} world metres in the panel under the point (panel -1: none)
     locate: function (clientX, clientY) {
       const r = canvas.getBoundingClientRect(), cx = clientX - r.left, cy = clientY - r.top;
-      const i = renderer.ok ? panelAt(cx, cy) : -1;
+      const i = renderer.ok ? stage.panelAt(state.panels, cx, cy) : -1;
       const w = i >= 0 ? state.panels[i].draw.toWorld(cx, cy) : [NaN, NaN];
       return { panel: i, x: w[0], y: w[1] };
     },
@@ -763,10 +549,11 @@
   });
   window.clothInput.attach(canvas, gestures);
 
-  function resized(w, h, devW, devH) {
-    renderer.resize(w, h, devW, devH);
-    relayout();
-  }
+  // The panel's settings (settings.js): a `set` through the session, or a new grid.
+  const settings = window.clothSettings.create({
+    state: state, sess: function () { return sess; }, load: load, acted: acted, ui: ui,
+    compareUI: compareUI, gestures: gestures,
+  });
 
   // The views laid out again (a resize, the charts shown or hidden): a held vertex stays under
   // its pointer, and the overlays' and the canvas's boxes are measured anew.
@@ -779,127 +566,26 @@
   }
 
   if (renderer.ok) {
-    const r0 = canvas.getBoundingClientRect();
-    resized(r0.width, r0.height);
-    window.addEventListener('resize', function () {
-      const r = canvas.getBoundingClientRect();
-      resized(r.width, r.height);
+    stage.watch(canvas, function (w, h, devW, devH, observed) {
+      renderer.resize(w, h, devW, devH);
+      relayout();
+      if (!observed) return;
+      render();  // same task as the resize: no blank frame
+      if (!document.getElementById('charts').hidden) charts.draw();
     });
-    if (window.ResizeObserver) {
-      // device-pixel-content-box gives the exact drawing-buffer size (sharp at
-      // fractional devicePixelRatio); where unsupported, round CSS size * dpr.
-      const ro = new ResizeObserver(function (entries) {
-        const e = entries[entries.length - 1];
-        const css = e.contentBoxSize && e.contentBoxSize[0];
-        let dev = e.devicePixelContentBoxSize && e.devicePixelContentBoxSize[0];
-        const w = css ? css.inlineSize : e.contentRect.width;
-        const h = css ? css.blockSize : e.contentRect.height;
-        // Emulated device scale factors (devtools, test drivers) are not reflected
-        // in the device-pixel box: trust it only when it agrees with CSS size * dpr.
-        const dpr = window.devicePixelRatio || 1;
-        if (dev && (Math.abs(dev.inlineSize - w * dpr) > 1 || Math.abs(dev.blockSize - h * dpr) > 1)) dev = null;
-        resized(w, h, dev ? dev.inlineSize : 0, dev ? dev.blockSize : 0);
-        render();  // same task as the resize: no blank frame
-        if (!document.getElementById('charts').hidden) charts.draw();
-      });
-      try { ro.observe(canvas, { box: 'device-pixel-content-box' }); } catch (e) { ro.observe(canvas); }
-    }
   }
 
   // ---- test seam ----------------------------------------------------------
 
-  // {positions: [[x, y]...] metres, screen: [[clientX, clientY]...], pinned, held, hands} of
-  // panel i; hands[k]: for a held vertex, where its hand is (clientX, clientY: the pointer's
-  // point in the cloth, which a hand of finite strength takes its vertex toward), else null.
-  function stateOf(i) {
-    const p = state.panels[i], c = p.cloth, n = c.n_verts, pos = c.pos;
-    const r = canvas.getBoundingClientRect();
-    const out = { positions: [], screen: [], pinned: [], held: [], hands: [] };
-    for (let k = 0; k < n; k++) {
-      const x = pos[2 * k], y = pos[2 * k + 1];
-      out.positions.push([x, y]);
-      if (renderer.ok) {
-        const q = p.draw.toCanvas(x, y);
-        out.screen.push([r.left + q[0], r.top + q[1]]);
-      }
-      out.pinned.push(c.pinned[k] !== 0);
-      out.held.push(c.held[k] !== 0);
-      if (c.held[k] !== 0 && renderer.ok) {
-        const q = p.draw.toCanvas(c.target[2 * k], c.target[2 * k + 1]);
-        out.hands.push([r.left + q[0], r.top + q[1]]);
-      } else {
-        out.hands.push(null);
-      }
-    }
-    return out;
-  }
-
-  window.clothApp = {
-    // The first panel's (the only one outside compare mode).
-    state: function () { return stateOf(0); },
-    setPaused: setPaused,
-    advance: advance,
-    // The recording since the last load or reset, as scene JSON text with `frames`.
-    recording: recordingText,
-    // A Promise of the link that replays the recording.
-    link: link,
-    replay: function () { replay(); return true; },
-    exportRecording: exportRecording,
-    // Compare mode: an array of objects of scene keys, one per panel ([] leaves it).
-    compare: function (list) { return setCompare(list); },
-    // Per panel: {label, scene (the panel's full scene JSON text), positions, screen,
-    // rms_strain, max_strain, sim_ms}, and pinned, held, max_diff, max_stress.
-    panels: function () {
-      return state.panels.map(function (p, i) {
-        const st = stateOf(i);
-        const obj = Object.assign({}, state.sceneObj);
-        delete obj.compare;
-        if (state.compare.length) Object.assign(obj, state.compare[i]);
-        return { label: runner.label(p.cloth), scene: JSON.stringify(obj), positions: st.positions,
-                 screen: st.screen, rms_strain: p.cloth.rms_strain, max_strain: p.cloth.max_strain,
-                 sim_ms: p.simMs, pinned: st.pinned, held: st.held, hands: st.hands, max_diff: p.cloth.max_diff,
-                 max_stress: p.cloth.max_stress };
-      });
-    },
-    setColorMode: setColorMode,
-    loadScene: loadScene,
-    // Extras for tests and the console.
-    setScaleMode: function (mode, fullScale) {
-      if (fullScale !== undefined) setFullScale(fullScale);
-      setScaleMode(mode);
-    },
-    usePreset: function (name) { usePreset(name); return true; },
-    setParam: setParam,
-    setSolver: setSolver,
-    setCutTool: setCutTool,
-    reset: reset,
-    cloth: function () { return state.cloth; },
-    // What the charts wrote at their last draw: [text, x, y, width, box x, y, w, h].
-    chartTexts: function () { return charts.written(); },
-    // RGBA at client coordinates, read right after a fresh draw.
-    pixels: function (points) {
-      render();
-      const r = canvas.getBoundingClientRect();
-      return points.map(function (p) { return renderer.readPixel(p[0] - r.left, p[1] - r.top); });
-    },
-    info: function () {
-      let simMs = NaN;
-      if (state.panels.length) simMs = state.panels[0].simMs;
-      return {
-        webgl: renderer.ok ? renderer.version : 0, lost: !!renderer.lost, restores: renderer.restores || 0,
-        relayouts: state.relayouts,
-        drawCalls: renderer.drawCalls || 0, paused: state.paused, mode: state.mode, scaleMode: state.scaleMode,
-        scale: state.scale, fullScale: state.fullScale, autoFloor: AUTO_FLOOR, frames: sess ? sess.frame : 0, preset: state.preset, params: state.params,
-        asleep: !!(state.cloth && allAsleep()), renders: state.renders,
-        replay: { playing: sess.replay_end >= 0, end: sess.replay_end, ended: sess.replay_ended },
-        linkPending: !!state.linkPending, panels: state.panels.length, simMs: simMs, chartLatest: charts.latest(0),
-        edges: state.cloth ? state.cloth.n_edges : 0, broken: state.cloth ? state.cloth.broken : 0, cutTool: bladeOn,
-        recorded: session.recordingCount(sess), recordingFull: session.recordingFull(sess),
-        error: ui.errorText(), note: ui.noteText(), scene: state.sceneText,
-        canvas: [canvas.width, canvas.height], dpr: window.devicePixelRatio || 1,
-      };
-    },
-  };
+  window.clothSeam.publish({
+    state: function () { return state; }, sess: function () { return sess; }, canvas: canvas,
+    renderer: renderer, charts: charts, ui: ui, runner: runner, session: session,
+    bladeOn: function () { return bladeOn; }, allAsleep: allAsleep, autoFloor: AUTO_FLOOR, render: render,
+    setPaused: setPaused, advance: advance, recordingText: recordingText, link: link, replay: replay,
+    exportRecording: exportRecording, setCompare: setCompare, setColorMode: setColorMode,
+    loadScene: loadScene, setScaleMode: setScaleMode, setFullScale: setFullScale, usePreset: usePreset,
+    setParam: settings.setParam, setSolver: settings.setSolver, setCutTool: setCutTool, reset: reset,
+  });
 
   // ---- start --------------------------------------------------------------
 

@@ -219,6 +219,44 @@ window.clothShare = (function () {
     return made.then(copy);
   }
 
-  return { MAX_LINK: MAX_LINK, MAX_BYTES: MAX_BYTES, linkFor: linkFor, sceneIn: sceneIn, decode: decode, fromText: fromText,
+  // Export: the recording saved as a file `name` and copied; note(text) says which.
+  function exportText(text, name, note) {
+    download(text, name);
+    copy(text).then(function () {
+      note('Recording saved as ' + name + ' and copied');
+    }, function () {
+      note('Recording saved as ' + name + ' (the browser kept the clipboard closed)');
+    });
+    return text;
+  }
+
+  // Copy link: the link that replays `text`, copied from the key or click handler itself
+  // (copyLater: WebKit's clipboard needs the person's task). A link longer than MAX_LINK is
+  // not copied: the note offers Export. A Promise of the link.
+  function copyLink(text, note) {
+    const made = linkFor(text);
+    const fits = made.then(function (url) {
+      if (url.length > MAX_LINK) throw new Error('too long');
+      return url;
+    });
+    return copyLater(fits).then(function () {
+      return made.then(function (url) {
+        note('Link copied (' + url.length + ' characters): it replays this recording');
+        return url;
+      });
+    }, function () {
+      return made.then(function (url) {
+        if (url.length > MAX_LINK) {
+          note('This recording makes a link of ' + url.length + ' characters, longer than the ' +
+               MAX_LINK + ' a link may have: use Export to save it as a file');
+        } else {
+          window.prompt('Copy this link (the browser kept the clipboard closed):', url);
+        }
+        return url;
+      });
+    });
+  }
+
+  return { exportText: exportText, copyLink: copyLink, MAX_LINK: MAX_LINK, MAX_BYTES: MAX_BYTES, linkFor: linkFor, sceneIn: sceneIn, decode: decode, fromText: fromText,
            readFile: readFile, download: download, copy: copy, copyLater: copyLater, badByte: badByte };
 })();

@@ -1,0 +1,128 @@
+// The panel's settings applied to what runs: a setting that leaves the grid as it is goes to
+// the session as a `set` (every panel, recorded); Columns and Rows make a new grid (grid.js)
+// and load it. Compare mode follows what the panels run. The app passes in what it owns.
+'use strict';
+
+window.clothSettings = (function () {
+  const scenes = window.clothScenes, params = window.clothParams, core = window.clothCore;
+  const session = core.session, own = window.clothOptions.own;
+  const limitOf = params.limitOf, withSettings = params.written;
+
+  function paramsOf(cloth) { return params.of(cloth.scene, cloth.cols, cloth.rows); }
+
+  // app: {state (the app's state object), sess() (the session), load(text, preset, view,
+  // holds), acted(), ui, compareUI, gestures}.
+  function create(app) {
+    const state = app.state, ui = app.ui;
+
+    // A set (the Scene section's or a script's) is written into every panel, the keys a panel
+    // has of its own included: the compare list, its editor and a later grid change follow what
+    // the panels run (params.running). Returns whether the list changed.
+    function followSets() {
+      if (!state.compare.length) return false;
+      const now = params.running(state.compare, state.panels.map(function (p) { return p.cloth.scene; }));
+      if (JSON.stringify(now) === JSON.stringify(state.compare)) return false;
+      state.compare = now;
+      app.compareUI.render(now);
+      return true;
+    }
+
+    // Keys that leave the grid as it is apply to the running cloth (core.setSettings): its
+    // positions, speeds, pins and held vertices stay. Columns and rows make a new grid.
+    const GRID_KEYS = { cols: 1, rows: 1 };
+
+    function setParam(key, raw) {
+      const c = scenes.clamp(key, raw);
+      if (c.value === null) { ui.note(c.note); ui.setParams(state.params); return; }
+      const p = Object.assign({}, state.params);
+      p[key] = c.value;
+      if (own(GRID_KEYS, key)) regrid(p, c.note);
+      else retune(p, c.note);
+    }
+
+    // A solver starts from its own substeps and iterations.
+    function setSolver(name) {
+      const d = own(scenes.SOLVERS, name) ? scenes.SOLVERS[name] : null;
+      if (!d) throw new Error('unknown solver: ' + name);
+      retune(Object.assign({}, state.params, { solver: name, substeps: d.substeps, iterations: d.iterations }), '');
+    }
+
+    // A named fabric: its density and stiffness, set like every setting (recorded as a `set` of
+    // density and compliance).
+    function setMaterial(name) {
+      if (!own(scenes.MATERIALS, name)) { ui.setParams(state.params); return; }
+      retune(Object.assign({}, state.params, { material: name }), '');
+    }
+
+    // New settings for the running cloth (the core's set: cloth/api.py set_settings, what a
+    // recorded `set` action replays), in every panel: keys a panel has of its own are set too,
+    // as the recording's `set` sets them; a rejected one leaves everything as it was.
+    function retune(p, note) {
+      const keys = params.changed(state.params, p, state.base.scene.gravity_x);
+      const obj = withSettings(state.sceneObj, p);
+      try {
+        const limit = limitOf(obj);
+        if (limit) throw new Error(limit);
+        if (Object.keys(keys).length) {
+          session.change(app.sess(), JSON.stringify(keys));
+          app.acted();
+        }
+      } catch (e) {
+        ui.error('Setting not applied: ' + e.message + ' (the cloth runs on as it was)', 'setting');
+        ui.setParams(state.params);
+        ui.setSolver(state.params.solver);
+        return;
+      }
+      if (followSets()) {
+        obj.compare = state.compare;
+        note = (note ? note + '; ' : '') + 'set in every panel, over the panels\' own values (the compare editor shows what each runs)';
+      }
+      // A Solver or Material change that leaves a material unused says so (cloth/scene.py).
+      const unused = keys.solver !== undefined || keys.compliance !== undefined ? core.unused(state.base) : '';
+      if (unused) note = (note ? note + '; ' : '') + unused.charAt(0).toUpperCase() + unused.slice(1);
+      state.sceneObj = obj;
+      state.sceneText = JSON.stringify(obj);   // Reset restarts with the new settings
+      state.params = paramsOf(state.base);
+      ui.setParams(state.params);
+      ui.setSolver(state.params.solver);
+      ui.clearError('setting');     // a refused setting's banner ends with one that applies
+      ui.note(note);
+      state.dirty = true;
+    }
+
+    // A new grid (grid.js): pins keep their meaning, row and column; the pins a person set or
+    // removed are written over the new scene's, and the vertices a hand holds held again. What
+    // falls outside the new grid is dropped, and the note says so.
+    function regrid(p, note) {
+      const m = window.clothGrid.mover(state.cloth.cols, p.cols, p.rows);
+      const dropped = [];
+      let obj, view, preset = state.preset;
+      if (preset !== 'custom') {
+        const made = scenes.make(preset, p);
+        obj = made.scene; view = made.view;
+        if (state.compare.length) obj.compare = state.compare;
+      } else {
+        obj = window.clothGrid.moveScene(withSettings(state.sceneObj, p), state.cloth.scene.pins, m, p.cols, p.rows, dropped);
+        if (state.compare.length) obj.compare = state.compare;   // as the panels run (followSets)
+        view = scenes.viewFor(obj);
+      }
+      const edits = window.clothGrid.applyEdits(obj, state.pinEdits, m, dropped);
+      const holds = app.gestures.held().map(function (h) { return { k: m.moved(h.k), was: h.k, id: h.id }; });
+      try {
+        app.load(JSON.stringify(obj), preset, view, holds);
+      } catch (e) {
+        ui.setParams(state.params);  // the banner shows why; the old scene runs on
+        return;
+      }
+      state.pinEdits = edits;
+      holds.forEach(function (h) { if (h.k < 0) dropped.push('the held vertex at ' + m.place(h.was)); });
+      const notes = [note, state.slowWarning, window.clothGrid.droppedNote(dropped, p.cols, p.rows)];
+      ui.note(notes.filter(function (t) { return !!t; }).join('; '));
+    }
+
+    return { setParam: setParam, setSolver: setSolver, setMaterial: setMaterial, followSets: followSets,
+             paramsOf: paramsOf };
+  }
+
+  return { create: create, paramsOf: paramsOf };
+})();

@@ -1,0 +1,62 @@
+// The stage: the panels' rectangles in the canvas, the panel under a point, and the canvas's
+// size as the browser reports it. Geometry only: the app decides what a new size redraws.
+'use strict';
+
+window.clothStage = (function () {
+  const LABEL_HEIGHT = 44;    // CSS px: a panel label's two lines, its padding and offset
+
+  // Lay the panels ({draw}: renderer panels) out in a w x h CSS px box (the canvas above the
+  // overlays' band) for a view {x0, y0, x1, y1}; one panel takes all of it, its view fitted.
+  // Returns the rectangles [{x, y, w, h}].
+  function layout(panels, view, w, h) {
+    const n = panels.length;
+    const rects = n > 1
+      ? window.clothCompare.layout(n, w, h, view.x1 - view.x0, view.y1 - view.y0)
+      : [{ x: 0, y: 0, w: w, h: h }];
+    panels.forEach(function (p, i) {
+      const r = rects[i];
+      // A panel's cloth is fitted below its label (two lines, compare.js), where there is room.
+      const top = n > 1 && r.h > 3 * LABEL_HEIGHT ? LABEL_HEIGHT : 0;
+      if (n > 1) p.draw.setRect(r.x, r.y, r.w, r.h);
+      else p.draw.setRect();
+      p.draw.setFit(r.x, r.y + top, r.w, r.h - top);
+    });
+    return rects;
+  }
+
+  // The panel under a point of the canvas (CSS px), or -1.
+  function panelAt(panels, cx, cy) {
+    for (let i = 0; i < panels.length; i++) if (panels[i].draw.contains(cx, cy)) return i;
+    return -1;
+  }
+
+  // Calls sized(cssWidth, cssHeight, deviceWidth, deviceHeight, observed) now and on every
+  // change of the canvas's size (device sizes 0 where the browser does not give them;
+  // observed: from a ResizeObserver, in the task that will paint the new size).
+  function watch(canvas, sized) {
+    const r0 = canvas.getBoundingClientRect();
+    sized(r0.width, r0.height, 0, 0, false);
+    window.addEventListener('resize', function () {
+      const r = canvas.getBoundingClientRect();
+      sized(r.width, r.height, 0, 0, false);
+    });
+    if (!window.ResizeObserver) return;
+    // device-pixel-content-box gives the exact drawing-buffer size (sharp at fractional
+    // devicePixelRatio); where unsupported, round CSS size * dpr.
+    const ro = new ResizeObserver(function (entries) {
+      const e = entries[entries.length - 1];
+      const css = e.contentBoxSize && e.contentBoxSize[0];
+      let dev = e.devicePixelContentBoxSize && e.devicePixelContentBoxSize[0];
+      const w = css ? css.inlineSize : e.contentRect.width;
+      const h = css ? css.blockSize : e.contentRect.height;
+      // Emulated device scale factors (devtools, test drivers) are not reflected in the
+      // device-pixel box: trust it only when it agrees with CSS size * dpr.
+      const dpr = window.devicePixelRatio || 1;
+      if (dev && (Math.abs(dev.inlineSize - w * dpr) > 1 || Math.abs(dev.blockSize - h * dpr) > 1)) dev = null;
+      sized(w, h, dev ? dev.inlineSize : 0, dev ? dev.blockSize : 0, true);
+    });
+    try { ro.observe(canvas, { box: 'device-pixel-content-box' }); } catch (e) { ro.observe(canvas); }
+  }
+
+  return { layout: layout, panelAt: panelAt, watch: watch };
+})();
