@@ -8,7 +8,7 @@ from cloth.host import to_json, kind_of, is_finite, parse_json
 from cloth.scene import (parse_scene, fail, MAX_FRAMES, MATERIALS,
                          DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large, KEYS, SOLVERS,
                          DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES,
-                         unused_settings)
+                         unused_settings, SCENE_FIELDS)
 from cloth.sim import Cloth, count_edges, frame, measure, grab, move, move_by, release, pin, unpin, cut, \
     nearest
 from cloth.script import apply_settings, apply_due as due
@@ -48,9 +48,9 @@ def schema():
     """The scene's keys as scene.KEYS declares them (each a Key: kind, range and its words,
     label, unit, live, panel, defaults, the page's field range), and the limits and names the
     page's other parts check against: [keys, solvers, default solver, action ops, most actions,
-    most panels, most vertices]. The page derives its fields, the compare editor and the
+    most panels, most vertices, the Scene section's fields]. The page derives its fields, the compare editor and the
     recorder from these, so that a key is declared once."""
-    return [KEYS, SOLVERS, DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES]
+    return [KEYS, SOLVERS, DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, SCENE_FIELDS]
 
 
 def unused(cloth):

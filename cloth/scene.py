@@ -28,6 +28,19 @@ OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut']
 MAX_TEAR = 1e6
 MAX_PANELS = 4
 
+# The page's Scene section: its number fields, in order, each with the hint it shows beside
+# its range (a `point` key's field is its y component). A key that is not `live` makes the
+# grid: a change of it loads a new one.
+SCENE_FIELDS = [
+    ['cols', ''],
+    ['rows', ''],
+    ['iterations', ''],
+    ['substeps', ''],
+    ['gravity', 'its y component: down is negative'],
+    ['damping', 'air: the velocity lost per second'],
+    ['tear', 'an edge breaks once its strain (length \u2212 rest) / rest passes this; empty: no tearing'],
+]
+
 
 class Key:
     """One scene key, declared once: the parser checks it by this, its messages word its

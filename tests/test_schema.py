@@ -109,3 +109,15 @@ def test_a_panel_may_have_exactly_its_declared_keys():
         else:
             with pytest.raises(SceneError, match='not a key a panel can have'):
                 parse_scene(text)
+
+
+def test_the_scene_sections_fields_are_number_keys_with_fields():
+    """The page's Scene section is made from SCENE_FIELDS: each a key with a field range, a
+    number or an int (a point's field is its y), and the grid's keys are the ones not live."""
+    from cloth.scene import SCENE_FIELDS
+    k = {key.key: key for key in KEYS}
+    assert len({f[0] for f in SCENE_FIELDS}) == len(SCENE_FIELDS)
+    for key, hint in SCENE_FIELDS:
+        assert k[key].field_hi > k[key].field_lo and k[key].kind in ('int', 'number', 'point'), key
+        assert isinstance(hint, str)
+    assert [f[0] for f in SCENE_FIELDS if not k[f[0]].live] == ['cols', 'rows']

@@ -1,45 +1,33 @@
-// The settings the panel shows (params: cols, rows, iterations, substeps, gravity, damping,
-// solver, tear, material): read from a cloth's scene, written into a scene object, and the
-// scene keys a change of them sets; and the page's limits for a scene and its panels. Pure:
-// data in, data out (the app applies them through the session).
+// The settings the panel shows (params: the Scene section's fields, cloth/scene.py
+// SCENE_FIELDS, and the solver and material): read from a cloth's scene, written into a
+// scene object, and the scene keys a change of them sets; and the page's limits for a scene
+// and its panels. Pure: data in, data out (the app applies them through the session).
 'use strict';
 
 window.clothParams = (function () {
   const scenes = window.clothScenes, own = window.clothOptions.own;
+  const KEYS = window.clothCore.schema().keys;
 
   // The params as a cloth's scene has them now (the scene it runs, settings set live included).
-  function of(scene, cols, rows) {
-    return { cols: cols, rows: rows, iterations: scene.iterations, substeps: scene.substeps,
-             gravity: scene.gravity_y, damping: scene.damping, solver: scene.solver, tear: scene.tear,
-             material: scenes.materialOf(scene.density, scene.compliance) };
+  function of(scene) {
+    const p = { solver: scene.solver, material: scenes.materialOf(scene.density, scene.compliance) };
+    scenes.SCENE_FIELDS.forEach(function (key) { p[key] = scenes.fieldOf(scene, key); });
+    return p;
   }
 
-  // The scene object with params p written into it.
+  // The scene object with params p written into it (the grid's keys are the caller's).
   function written(obj, p) {
-    const out = Object.assign({}, obj);
-    out.iterations = p.iterations;
-    out.substeps = p.substeps;
-    out.solver = p.solver;
-    out.damping = p.damping;
-    out.gravity = [Array.isArray(obj.gravity) ? obj.gravity[0] : 0, p.gravity];
-    if (p.tear > 0) out.tear = p.tear; else delete out.tear;
-    if (own(scenes.MATERIALS, p.material)) {
-      out.density = scenes.MATERIALS[p.material].density;
-      out.compliance = scenes.MATERIALS[p.material].compliance;
-    }
-    return out;
+    return scenes.writeParams(Object.assign({}, obj), p);
   }
 
   // The scene keys that take a running cloth from params `was` to `p` (a `set` action's
-  // `scene`); gx: the scene's gravity along x, which the panel does not show.
-  function changed(was, p, gx) {
+  // `scene`); scene: the running scene (a point key keeps its x, which the panel does not show).
+  function changed(was, p, scene) {
     const keys = {};
-    if (p.iterations !== was.iterations) keys.iterations = p.iterations;
-    if (p.substeps !== was.substeps) keys.substeps = p.substeps;
+    scenes.SCENE_FIELDS.forEach(function (key) {
+      if (KEYS[key].live && p[key] !== was[key]) keys[key] = scenes.fieldValue(key, p[key], scene[key + '_x'], false);
+    });
     if (p.solver !== was.solver) keys.solver = p.solver;
-    if (p.damping !== was.damping) keys.damping = p.damping;
-    if (p.gravity !== was.gravity) keys.gravity = [gx, p.gravity];
-    if (p.tear !== was.tear) keys.tear = p.tear > 0 ? p.tear : null;
     if (p.material !== was.material && own(scenes.MATERIALS, p.material)) {
       keys.density = scenes.MATERIALS[p.material].density;
       keys.compliance = scenes.MATERIALS[p.material].compliance;

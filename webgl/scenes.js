@@ -84,6 +84,40 @@ window.clothScenes = (function () {
     return 'custom';
   }
 
+  // The Scene section's number fields (cloth/scene.py SCENE_FIELDS), in order.
+  const SCENE_FIELDS = SCHEMA.sceneFields.map(function (f) { return f.key; });
+
+  // A Scene-section field's value in a scene as the core holds it (a cloth's `scene`): a
+  // point key's field is its y component.
+  function fieldOf(scene, key) {
+    return SCHEMA.keys[key].kind === 'point' ? scene[key + '_y'] : scene[key];
+  }
+
+  // The value a scene object takes for field `key` at value v (a point keeps its x; a key
+  // whose 0 means none takes null); undefined for none where `omit` (a scene written whole).
+  function fieldValue(key, v, x, omit) {
+    if (SCHEMA.keys[key].kind === 'point') return [x, v];
+    if (LIMITS[key].off && !(v > 0)) return omit ? undefined : null;
+    return v;
+  }
+
+  // The scene object `obj` with the panel's settings p written in: the live Scene-section
+  // fields (those that are not live make the grid, and the caller writes them), the solver
+  // and the material's density and stiffness.
+  function writeParams(obj, p) {
+    SCENE_FIELDS.forEach(function (key) {
+      if (!SCHEMA.keys[key].live) return;
+      const v = fieldValue(key, p[key], Array.isArray(obj[key]) ? obj[key][0] : 0, true);
+      if (v === undefined) delete obj[key]; else obj[key] = v;
+    });
+    obj.solver = p.solver;
+    if (own(MATERIALS, p.material)) {
+      obj.density = MATERIALS[p.material].density;
+      obj.compliance = MATERIALS[p.material].compliance;
+    }
+    return obj;
+  }
+
   function topRow(cols, every) {
     const pins = [];
     for (let c = 0; c < cols; c += every) pins.push(c);
@@ -171,23 +205,8 @@ window.clothScenes = (function () {
     if (!preset) throw new Error('unknown preset: ' + name);
     const p = Object.assign({}, DEFAULT_PARAMS, preset.params, params || {});
     const spacing = spacingFor(preset, p.cols, p.rows);
-    const scene = {
-      cols: p.cols,
-      rows: p.rows,
-      spacing: spacing,
-      pins: preset.pins(p.cols, p.rows),
-      gravity: [0, p.gravity],
-      dt: 1 / 60,
-      substeps: p.substeps,
-      iterations: p.iterations,
-      solver: p.solver,
-      damping: p.damping,
-    };
-    if (own(MATERIALS, p.material)) {
-      scene.density = MATERIALS[p.material].density;
-      scene.compliance = MATERIALS[p.material].compliance;
-    }
-    if (p.tear > 0) scene.tear = p.tear;
+    const scene = writeParams({ cols: p.cols, rows: p.rows, spacing: spacing, pins: preset.pins(p.cols, p.rows),
+                                dt: 1 / 60 }, p);
     if (preset.actions) scene.actions = preset.actions(p.cols, p.rows, spacing);
     const w = (p.cols - 1) * spacing, h = (p.rows - 1) * spacing;
     const view = preset.view ? preset.view(w, h) : viewFor(scene, preset.sag);
@@ -275,7 +294,8 @@ window.clothScenes = (function () {
     return Object.assign({}, DEFAULT_PARAMS, PRESETS[name].params);
   }
 
-  return { PRESETS: PRESETS, LIMITS: LIMITS, SOLVERS: SOLVERS, MATERIALS: MATERIALS, materialOf: materialOf,
+  return { SCENE_FIELDS: SCENE_FIELDS, fieldOf: fieldOf, fieldValue: fieldValue, writeParams: writeParams,
+           PRESETS: PRESETS, LIMITS: LIMITS, SOLVERS: SOLVERS, MATERIALS: MATERIALS, materialOf: materialOf,
            PAGE_LIMITS: PAGE_LIMITS,
            REAL_TIME_WORK: REAL_TIME_WORK, defaults: defaults, make: make, viewFor: viewFor,
            clamp: clamp, readNumber: readNumber, workOf: workOf, pageLimit: pageLimit };

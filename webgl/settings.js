@@ -6,9 +6,9 @@
 window.clothSettings = (function () {
   const scenes = window.clothScenes, params = window.clothParams, core = window.clothCore;
   const session = core.session, own = window.clothOptions.own;
-  const limitOf = params.limitOf, withSettings = params.written;
+  const limitOf = params.limitOf, withSettings = params.written, KEYS = core.schema().keys;
 
-  function paramsOf(cloth) { return params.of(cloth.scene, cloth.cols, cloth.rows); }
+  function paramsOf(cloth) { return params.of(cloth.scene); }
 
   // app: {state (the app's state object), sess() (the session), load(text, preset, view,
   // holds), acted(), ui, compareUI, gestures}.
@@ -27,16 +27,16 @@ window.clothSettings = (function () {
       return true;
     }
 
-    // Keys that leave the grid as it is apply to the running cloth (core.setSettings): its
-    // positions, speeds, pins and held vertices stay. Columns and rows make a new grid.
-    const GRID_KEYS = { cols: 1, rows: 1 };
-
+    // A Scene-section field (scenes.SCENE_FIELDS) typed in. A key that may be set live applies
+    // to the running cloth (the session's `set`): its positions, speeds, pins and held
+    // vertices stay. The others (columns, rows) make a new grid.
     function setParam(key, raw) {
+      if (scenes.SCENE_FIELDS.indexOf(key) < 0) throw new Error('not a field of the Scene section: ' + key);
       const c = scenes.clamp(key, raw);
       if (c.value === null) { ui.note(c.note); ui.setParams(state.params); return; }
       const p = Object.assign({}, state.params);
       p[key] = c.value;
-      if (own(GRID_KEYS, key)) regrid(p, c.note);
+      if (!KEYS[key].live) regrid(p, c.note);
       else retune(p, c.note);
     }
 
@@ -58,7 +58,7 @@ window.clothSettings = (function () {
     // recorded `set` action replays), in every panel: keys a panel has of its own are set too,
     // as the recording's `set` sets them; a rejected one leaves everything as it was.
     function retune(p, note) {
-      const keys = params.changed(state.params, p, state.base.scene.gravity_x);
+      const keys = params.changed(state.params, p, state.base.scene);
       const obj = withSettings(state.sceneObj, p);
       try {
         const limit = limitOf(obj);

@@ -64,7 +64,19 @@ window.clothUI = (function () {
       recStatus: $('rec-status'), replay: $('r-replay'), replayFrame: $('r-replay-frame'), replayEnd: $('r-replay-end'),
       fileInput: $('file-input'),
     };
-    const params = ['cols', 'rows', 'iterations', 'substeps', 'gravity', 'damping', 'tear'];
+    // The Scene section's number fields, made from the core's list (cloth/scene.py
+    // SCENE_FIELDS) before the Blade's box: captioned, ranged and read by fields.js.
+    const LIMITS = window.clothScenes.LIMITS;
+    const params = window.clothScenes.SCENE_FIELDS;
+    window.clothCore.schema().sceneFields.forEach(function (f) {
+      const label = document.createElement('label'), input = document.createElement('input');
+      input.id = f.key;
+      if (LIMITS[f.key].off) input.placeholder = 'off';
+      if (f.hint) label.title = f.hint.charAt(0).toUpperCase() + f.hint.slice(1);
+      label.appendChild(document.createTextNode(' '));
+      label.appendChild(input);
+      $('scene-fields').insertBefore(label, $('blade-box'));
+    });
     let noteTimer = 0;
     let errorAbout = '';   // what the shown error is about (error, clearError)
     let legendName = 'edge |diff|';
@@ -199,8 +211,8 @@ window.clothUI = (function () {
       setParams: function (p) {
         params.forEach(function (key) {
           if (p[key] === undefined) return;
-          // tear 0 is no tearing: the field shows its placeholder, "off"
-          $(key).value = key === 'tear' && !(p[key] > 0) ? '' : String(p[key]);
+          // a key whose 0 means none (tearing): the field shows its placeholder, "off"
+          $(key).value = LIMITS[key].off && !(p[key] > 0) ? '' : String(p[key]);
         });
         if (p.material !== undefined) $('material').value = p.material;
       },

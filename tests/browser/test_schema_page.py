@@ -11,7 +11,9 @@ from cloth.scene import KEYS, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, COMPAR
     solver_defaults
 from cloth.sim import count_edges
 
-PANEL_FIELDS = ['cols', 'rows', 'iterations', 'substeps', 'gravity', 'damping', 'tear']
+from cloth.scene import SCENE_FIELDS
+
+PANEL_FIELDS = [f[0] for f in SCENE_FIELDS]
 
 
 def caption(k):
@@ -56,6 +58,12 @@ def test_the_page_reads_the_cores_declarations(open_page):
 def test_the_panels_fields_are_captioned_and_bounded_by_their_keys(open_page):
     pg = open_page()
     k = {k.key: k for k in KEYS}
+    # The Scene section's fields are the core's list, in its order, with its hints.
+    shown = pg.js('''[...document.querySelectorAll('#scene-fields input')].map(
+        (el) => [el.id, el.parentNode.title])''')
+    assert [s[0] for s in shown] == PANEL_FIELDS
+    for (key, title), (_, hint) in zip(shown, SCENE_FIELDS):
+        assert title.lower() == hint.lower(), key
     for key in PANEL_FIELDS:
         text = pg.js('(id) => document.getElementById(id).parentNode.textContent.trim()', key)
         assert text == caption(k[key]), key
@@ -67,6 +75,19 @@ def test_the_panels_fields_are_captioned_and_bounded_by_their_keys(open_page):
     pg.press('#substeps', 'Enter')
     assert pg.js('clothApp.info().params.substeps') == k['substeps'].field_hi
     assert 'Substeps clamped to its maximum %d' % k['substeps'].field_hi in pg.info()['note']
+    # Each field is read from and written to its key: typed in, it is what the cloth runs
+    # (a point key's field is its y component; a grid key makes a new grid).
+    typed = {'iterations': '3', 'substeps': '5', 'gravity': '-4.5', 'damping': '0.5', 'tear': '0.7',
+             'cols': '9', 'rows': '8'}
+    assert set(typed) == set(PANEL_FIELDS)
+    for key in PANEL_FIELDS:
+        pg.fill('#' + key, typed[key])
+        pg.press('#' + key, 'Enter')
+    scene = pg.js('clothApp.cloth().scene')
+    for key in PANEL_FIELDS:
+        got = scene[key + '_y'] if k[key].kind == 'point' else scene[key]
+        assert got == float(typed[key]), key
+        assert pg.input_value('#' + key) == typed[key], key
 
 
 def fmt(x):
