@@ -230,8 +230,6 @@ class Session:
         # A recording replays to its `frames` and stops there; -1: nothing to stop at.
         self.replay_end = scene.frames
         self.replay_ended = False
-        # Set when the script applied a `set`: what the settings panel shows has changed.
-        self.script_set = False
         # 1 where a person's hand holds the vertex (a scripted grab takes it over).
         self.person = i32(n)
         # Compare mode: where each hand took hold (world metres, in the panel pressed) and how
@@ -258,14 +256,12 @@ def open_session(text):
 def after_script(s, start, end):
     """The script's actions [start, end) were applied: a scripted grab takes its vertex from
     a person's hand (the script moves it now, and the pointer's release must not let go of
-    the script's hold); a scripted set changes the settings shown."""
+    the script's hold)."""
     actions = s.panels[0].scene.actions
     for i in range(start, end):
         a = actions[i]
         if a.op == 'grab':
             s.person[a.vertex] = 0
-        elif a.op == 'set':
-            s.script_set = True
 
 
 def step_panel(s, i, f):

@@ -195,14 +195,13 @@
   // After the script's actions ran (`ran`: some did): a scripted grab took its vertex from a
   // person's hand (the session's `person`), so the pointer lets go of it here too, and its
   // release will not let go of the script's hold; a scripted set changes what the settings
-  // panel shows.
+  // panel and the compare editor show. Nothing ran: nothing to do (this runs every frame).
   function scripted(ran) {
-    state.params = paramsOf(state.base);
     if (!ran) return;
     if (gestures.count() > 0) {
       gestures.held().forEach(function (h) { if (sess.person[h.k] === 0) gestures.forget(h.k); });
     }
-    sess.script_set = false;
+    state.params = paramsOf(state.base);
     settings.followSets();
     ui.setParams(state.params);
     ui.setSolver(state.params.solver);
@@ -364,7 +363,7 @@
     const done = runner.stepPanel(state.panels[0].run, sess, 0, n, budgetMs > 0 ? share_ : 0);
     for (let i = 1; i < state.panels.length; i++) runner.stepPanel(state.panels[i].run, sess, i, done, 0);
     session.framesRan(sess, done, from);
-    scripted(sess.script_next[0] > from || sess.script_set);
+    scripted(sess.script_next[0] > from);
     for (let i = 0; i < state.panels.length; i++) {
       const p = state.panels[i];
       p.cloth.measure();
