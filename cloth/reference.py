@@ -129,3 +129,49 @@ def elastic_chain(n_links, link, span, node_weight, compliance):
 # same tension, and its vertices would not balance), so the load spreads over rows in a way
 # only a 2-D solve gives. The benchmark holds that scene against the same run at 8x the
 # substeps and at other grid sizes instead.
+
+
+def wind_column(rows, spacing, density, drag, wind, gravity=9.81):
+    """Exact equilibrium of one column of `rows` vertices (rigid links of `spacing`, vertex 0
+    pinned at the origin, each vertex density * spacing^2 kg) in a horizontal wind `wind` m/s
+    with drag `drag` (sim.feel_air: a link at angle theta from the vertical is pushed along
+    its normal (cos theta, sin theta) by drag * spacing^2 * wind * cos theta, half on each
+    end): [(x, y)] of the vertices. Each link points along the total load below it; found by
+    fixed-point iteration on the angles. The continuum's lean: tan theta = drag wind /
+    (density g) (wind_lean)."""
+    n = rows - 1
+    mass = density * spacing * spacing
+    theta = [wind_lean(drag, wind, density, gravity)] * n
+    for _ in range(10000):
+        # loads on vertices 1..n
+        fx = [0.0] * (n + 1)
+        fy = [-mass * gravity] * (n + 1)
+        for j in range(n):             # link j joins vertex j and j + 1
+            f = drag * spacing * spacing * wind * math.cos(theta[j])
+            for v in (j, j + 1):
+                fx[v] += 0.5 * f * math.cos(theta[j])
+                fy[v] += 0.5 * f * math.sin(theta[j])
+        new = []
+        px = py = 0.0
+        for j in range(n - 1, -1, -1):
+            px += fx[j + 1]
+            py += fy[j + 1]
+            new.append(math.atan2(px, -py))
+        new.reverse()
+        moved = max(abs(a - b) for a, b in zip(new, theta)) if n else 0.0
+        theta = new
+        if moved < 1e-15:
+            break
+    out = [(0.0, 0.0)]
+    for j in range(n):
+        x, y = out[-1]
+        out.append((x + spacing * math.sin(theta[j]), y - spacing * math.cos(theta[j])))
+    return out
+
+
+def wind_lean(drag, wind, density, gravity=9.81):
+    """The angle from the vertical of a long column in a horizontal wind (the continuum of
+    wind_column): the normal push drag * wind * cos theta per area, tilted with the column,
+    balances the weight's part across it, density g sin theta: tan theta = drag wind /
+    (density g)."""
+    return math.atan(drag * wind / (density * gravity))

@@ -29,16 +29,19 @@ MAX_TEAR = 1e6
 MAX_PANELS = 4
 
 # The page's Scene section: its number fields, in order, each with the hint it shows beside
-# its range (a `point` key's field is its y component). A key that is not `live` makes the
-# grid: a change of it loads a new one.
+# its range and, for a `point` key, the component the field is (0: x, 1: y). A key that is
+# not `live` makes the grid: a change of it loads a new one.
 SCENE_FIELDS = [
-    ['cols', ''],
-    ['rows', ''],
-    ['iterations', ''],
-    ['substeps', ''],
-    ['gravity', 'its y component: down is negative'],
-    ['damping', 'air: the velocity lost per second'],
-    ['tear', 'an edge breaks once its strain (length \u2212 rest) / rest passes this; empty: no tearing'],
+    ['cols', '', 0],
+    ['rows', '', 0],
+    ['iterations', '', 0],
+    ['substeps', '', 0],
+    ['gravity', 'its y component: down is negative', 1],
+    ['damping', 'still air: the velocity lost per second', 0],
+    ['wind', 'its x component: the air\'s velocity, which pushes the cloth across its edges '
+     '(with the scene\'s drag)', 0],
+    ['tear', 'an edge breaks once its strain (length \u2212 rest) / rest passes this; empty: no tearing',
+     0],
 ]
 
 
@@ -123,6 +126,17 @@ KEYS = [
     # meant).
     Key('density', 'number', 0.0, 1e4, True, 'in (0, 10000] kg/m^2 (the cloth\'s mass per area)',
         'Density', 'kg/m\u00b2', True, 1, 0.0, None, 0.001, 100, 0.01),
+    # The air: its velocity (m/s) and how hard it pushes on the cloth across an edge (drag:
+    # N s/m^3, the force on a metre of edge standing for a strip one spacing wide, per m/s of
+    # air across it: per area, like the mass, so the same on every grid). Gusts scale the
+    # wind by 1 + amplitude * a smooth periodic wave of the period (polynomial, so the same to
+    # the bit in both runtimes). In still air none of it runs.
+    Key('wind', 'point', -1e3, 1e3, False, 'at most 1000 m/s per axis', 'Wind', 'm/s', True, 0,
+        [0.0, 0.0], None, -50, 50, 0.5),
+    Key('drag', 'number', 0.0, 1e3, False, 'from 0 to 1000 N s/m^3 (the air\'s push across an '
+        'edge, per square metre of cloth and m/s of air)', 'Drag', 'N\u00b7s/m\u00b3', True, 1, 0.1,
+        None, 0, 100, 0.01),
+    Key('gust', 'gust', 0, 0, False, '', 'Gust', '', True, 0, [0.0, 1.0], None, 0, 0, 0),
 ]
 
 
@@ -231,6 +245,13 @@ class Scene:
         gravity = spec('gravity').fallback
         self.gravity_x = gravity[0]
         self.gravity_y = gravity[1]
+        wind = spec('wind').fallback
+        self.wind_x = wind[0]      # m/s, the air's velocity
+        self.wind_y = wind[1]
+        self.drag = spec('drag').fallback
+        gust = spec('gust').fallback
+        self.gust_amplitude = gust[0]     # the wind's relative swing
+        self.gust_period = gust[1]        # s
         self.dt = spec('dt').fallback
         self.damping = spec('damping').fallback
         self.max_speed = spec('max_speed').fallback
@@ -457,6 +478,21 @@ def scene_from_object(obj):
             fail('name: must be a string')
     s.tear = read(obj, 'tear', s.tear)
     s.frames = read(obj, 'frames', s.frames)
+    if has_key(obj, 'wind'):
+        w = obj['wind']
+        if kind_of(w) != 'list' or len(w) != 2:
+            fail('wind: must be a list of two numbers [wx, wy] in m/s')
+        k = spec('wind')
+        s.wind_x = number(w[0], 'wind', k.lo, k.hi, False, k.words)
+        s.wind_y = number(w[1], 'wind', k.lo, k.hi, False, k.words)
+    s.drag = read(obj, 'drag', s.drag)
+    if has_key(obj, 'gust'):
+        g = obj['gust']
+        if kind_of(g) != 'list' or len(g) != 2:
+            fail('gust: must be a list [amplitude, period]: the wind swings by amplitude (0 to 10) '
+                 'of itself every period seconds (0.01 to 3600)')
+        s.gust_amplitude = number(g[0], 'gust', 0.0, 10.0, False, 'an amplitude from 0 to 10')
+        s.gust_period = number(g[1], 'gust', 0.01, 3600.0, False, 'a period from 0.01 to 3600 s')
     if has_key(obj, 'compare'):
         parse_compare(obj['compare'], obj)
     s.settings = copy_object(obj, NOT_SETTINGS, None)

@@ -16,10 +16,11 @@ import math
 
 from cloth.host import f64, i32
 from cloth.scene import SceneError
-from cloth.solve import integrate, sweep_jakobsen, sweep_xpbd, project_cells, \
+from cloth.solve import blow, integrate, sweep_jakobsen, sweep_xpbd, project_cells, \
     solve_lines, clear, max_motion2, copy_into, mark_crossed, \
     mark_overstretched, drive_hands, limit_speed, follow_velocity, N_CONSTS, K_SPACING, K_TOLERANCE, K_ALPHA, \
-    K_STRETCH, K_KEEP, K_AX, K_AY, K_MAX_STEP, K_TEAR2, K_HAND_STEP, K_HAND_SHARE, K_HAND_PUSH
+    K_STRETCH, K_KEEP, K_AX, K_AY, K_MAX_STEP, K_TEAR2, K_HAND_STEP, K_HAND_SHARE, K_HAND_PUSH, \
+    K_WIND_X, K_WIND_Y, K_AIR
 from cloth.measure import deformation, nearest_vertex
 from cloth.tethers import find_anchors, list_fixed, over_reach, label_pieces
 
@@ -186,6 +187,7 @@ class Cloth:
         self.let_go_frames = 0
         self.let_go_limited = 0
         self.let_go_t = 0.0
+        self.air_t = 0.0           # s of air felt: the gusts' clock
         self.velocity = f64(2 * n)
         self.frame_start = f64(2 * n)
         self.hands_last_frame = False
@@ -383,6 +385,13 @@ def order_sweep(cloth):
             cloth.right_slot[a] = j
 
 
+# Gusts: the wind times 1 + amplitude * GUST_PEAK * p (1 - p) (1 - 2p), p the phase in the
+# period: a smooth wave from -1 to 1 (its peak at p = 0.21 is 1/GUST_PEAK before scaling),
+# polynomial so that both runtimes compute it to the same bit (Math.sin and libm's sin may
+# differ in the last place).
+GUST_PEAK = 6.0 * math.sqrt(3.0)
+
+
 # ---- the step -----------------------------------------------------------------------------
 #
 # Operations are module functions taking the cloth, not methods: a Transcrypt method call
@@ -412,6 +421,7 @@ def step(cloth):
     the stages that make it hold at every size and under a hand."""
     begin_let_go(cloth)
     move_hands(cloth)
+    feel_air(cloth)
     predict(cloth)
     if cloth.iterations > 0:
         keep_cells(cloth)
@@ -481,7 +491,11 @@ def tear_overstretched(cloth):
 
 
 def settle(cloth):
-    """Count still frames; after a window of them, sleep if nothing drifted (see SLEEP_TIME)."""
+    """Count still frames; after a window of them, sleep if nothing drifted (see SLEEP_TIME).
+    Never in gusts: the air changes, however little the cloth moves."""
+    if cloth.use_air and cloth.gust_amplitude > 0.0:
+        cloth.still_frames = 0
+        return
     n = cloth.n_verts
     max_motion2(cloth.pos, cloth.last_pos, cloth.inv_mass, n, cloth.out)
     moved2 = cloth.out[0]
@@ -529,6 +543,24 @@ def move_hands(cloth):
     if cloth.n_hands > 0:
         drive_hands(cloth.pos, cloth.prev, cloth.hands, cloth.n_hands, cloth.grip, cloth.offset,
                     cloth.target, cloth.aim, cloth.aim_step, cloth.consts)
+
+
+def feel_air(cloth):
+    """The wind (`wind`, `drag`, `gust`) pushes each edge across itself by the air's velocity
+    relative to it (solve.blow): a hanging cloth leans and billows, and a cloth moving with
+    the air feels nothing. Only in a scene whose air moves: still air costs nothing."""
+    if not cloth.use_air:
+        return
+    cloth.air_t += cloth.h
+    f = cloth.h
+    if cloth.gust_amplitude > 0.0:
+        q = cloth.air_t / cloth.gust_period
+        p = q - math.floor(q)
+        f = cloth.h * (1.0 + cloth.gust_amplitude * GUST_PEAK * p * (1.0 - p) * (1.0 - 2.0 * p))
+    cloth.consts[K_WIND_X] = cloth.scene.wind_x * f
+    cloth.consts[K_WIND_Y] = cloth.scene.wind_y * f
+    blow(cloth.pos, cloth.prev, cloth.inv_mass, cloth.edge_a, cloth.edge_b, cloth.n_edges,
+         cloth.consts)
 
 
 def predict(cloth):
@@ -692,6 +724,13 @@ def configure(cloth, scene):
     k[K_TEAR2] = (1.0 + scene.tear) * (1.0 + scene.tear)
     k[K_HAND_STEP] = HAND_SPEED * cloth.h
     k[K_HAND_PUSH] = cloth.hand_push
+    # The air, where it moves (feel_air).
+    cloth.use_air = scene.drag > 0.0 and (scene.wind_x != 0.0 or scene.wind_y != 0.0)
+    cloth.gust_amplitude = scene.gust_amplitude
+    cloth.gust_period = scene.gust_period
+    # Over keep: the push is taken from `prev`, and integrate damps (pos - prev) by keep; the
+    # air's push is a force, not a velocity to damp (measured: damping 5 leaned a column 1% less).
+    k[K_AIR] = 0.5 * scene.drag * cloth.spacing * cloth.h / cloth.keep
     cloth.use_sleep = scene.sleep
     extent = max(longest - 1, 1) * cloth.spacing
     cloth.still_motion2 = SLEEP_MOTION * SLEEP_MOTION * extent * extent

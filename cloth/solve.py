@@ -27,12 +27,64 @@ K_TEAR2 = 8
 K_HAND_STEP = 9
 K_HAND_SHARE = 10
 K_HAND_PUSH = 11
-N_CONSTS = 12
+K_WIND_X = 12      # the air's displacement in this step (wind * gusts * h), m
+K_WIND_Y = 13
+K_AIR = 14         # drag * spacing * h / (2 keep) (blow)
+N_CONSTS = 15
+
+# At most this share of the air's relative motion across an edge is taken up by each end in
+# one step: a vertex has up to eight edges, and a stronger push would overshoot the air (an
+# explicit drag is stable only while drag * h / mass stays small; capped, any drag is).
+AIR_MOST = 0.125
 
 # Below this squared length an edge has no direction to push along (two fixed vertices
 # dragged onto one point): it is skipped rather than divided by zero, which would turn the
 # whole cloth into NaN within a frame.
 TINY2 = 1e-30
+
+
+def blow(pos, prev, inv_mass, edge_a, edge_b, n_edges, consts):
+    """The air's drag across every edge: an edge of length L stands for a strip of cloth one
+    spacing s wide, and the air moving at v_rel relative to it (its ends' mean velocity)
+    pushes it with drag * L * s * (v_rel . n) n along its normal n, half on each end. As a
+    change of each end's step (its velocity times h), taken from `prev`, so that Verlet
+    carries it: du = drag * s * h / 2 * w * L * ((u_air - u_edge) . n) n, each end's share
+    at most AIR_MOST of the relative motion across the edge. An edge moving with the air, or
+    along itself, feels nothing. (consts[K_AIR] carries 1 / keep: integrate's damping then
+    leaves the push whole.)"""
+    sqrt = math.sqrt
+    wx = consts[K_WIND_X]
+    wy = consts[K_WIND_Y]
+    k = consts[K_AIR]
+    for e in range(n_edges):
+        a = edge_a[e]
+        b = edge_b[e]
+        wa = inv_mass[a]
+        wb = inv_mass[b]
+        if wa == 0.0 and wb == 0.0:
+            continue
+        i = a + a
+        j = b + b
+        # n * L: the edge (b - a) turned a quarter
+        nx = pos[i + 1] - pos[j + 1]
+        ny = pos[j] - pos[i]
+        l2 = nx * nx + ny * ny
+        if l2 < TINY2:
+            continue
+        length = sqrt(l2)
+        rx = wx - 0.5 * ((pos[i] - prev[i]) + (pos[j] - prev[j]))
+        ry = wy - 0.5 * ((pos[i + 1] - prev[i + 1]) + (pos[j + 1] - prev[j + 1]))
+        across = (rx * nx + ry * ny) / l2
+        ca = k * wa * length
+        if ca > AIR_MOST:
+            ca = AIR_MOST
+        cb = k * wb * length
+        if cb > AIR_MOST:
+            cb = AIR_MOST
+        prev[i] -= ca * across * nx
+        prev[i + 1] -= ca * across * ny
+        prev[j] -= cb * across * nx
+        prev[j + 1] -= cb * across * ny
 
 
 def integrate(pos, prev, inv_mass, n, consts, anchor, tether, tethered, held, hands_on):

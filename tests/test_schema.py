@@ -88,7 +88,7 @@ def test_live_keys_are_the_ones_a_set_takes():
     cloth = load(json.dumps(BASE))
     for k in KEYS:
         value = {'int': k.field_lo, 'number': k.field_lo, 'bool': True, 'choice': SOLVERS[0],
-                 'point': [0, -1]}.get(k.kind, 1)
+                 'point': [0, -1], 'gust': [0.5, 1]}.get(k.kind, 1)
         if k.kind in ('int', 'number') and k.field_hi <= k.field_lo:
             value = k.hi
         text = json.dumps({k.key: value})
@@ -117,7 +117,7 @@ def test_the_scene_sections_fields_are_number_keys_with_fields():
     from cloth.scene import SCENE_FIELDS
     k = {key.key: key for key in KEYS}
     assert len({f[0] for f in SCENE_FIELDS}) == len(SCENE_FIELDS)
-    for key, hint in SCENE_FIELDS:
+    for key, hint, axis in SCENE_FIELDS:
         assert k[key].field_hi > k[key].field_lo and k[key].kind in ('int', 'number', 'point'), key
-        assert isinstance(hint, str)
+        assert isinstance(hint, str) and axis in ((0, 1) if k[key].kind == "point" else (0,))
     assert [f[0] for f in SCENE_FIELDS if not k[f[0]].live] == ['cols', 'rows']

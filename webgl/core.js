@@ -39,7 +39,7 @@ window.clothCore = (function (api) {
     });
     return { keys: keys, order: order, solvers: s[1].slice(), defaultSolver: s[2], ops: s[3].slice(),
              maxActions: s[4], maxPanels: s[5], maxVertices: s[6],
-             sceneFields: s[7].map(function (f) { return { key: f[0], hint: f[1] }; }) };
+             sceneFields: s[7].map(function (f) { return { key: f[0], hint: f[1], axis: f[2] }; }) };
   })();
 
   const core = {
@@ -68,7 +68,8 @@ window.clothCore = (function (api) {
     // cloth/scene.py (KEYS) and read here (cloth/api.py schema): {keys: {name: {kind, min,
     // max, minOpen, words, label, unit, live, panel, fallback, bySolver, field: {min, max,
     // step, int}}}, order: [names], solvers, defaultSolver, ops, maxActions, maxPanels,
-    // maxVertices, sceneFields: [{key, hint}] (the Scene section's number fields)}. Made
+    // maxVertices, sceneFields: [{key, hint, axis}] (the Scene section's number fields; axis: a point
+    // key's component)}. Made
     // once; callers must not change it.
     schema: function () { return SCHEMA; },
     // edgesOf(cols, rows, shear) -> how many edges such a grid has (cloth/sim.py count_edges).

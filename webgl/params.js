@@ -21,11 +21,11 @@ window.clothParams = (function () {
   }
 
   // The scene keys that take a running cloth from params `was` to `p` (a `set` action's
-  // `scene`); scene: the running scene (a point key keeps its x, which the panel does not show).
+  // `scene`); scene: the running scene (a point key keeps the component the panel does not show).
   function changed(was, p, scene) {
     const keys = {};
     scenes.SCENE_FIELDS.forEach(function (key) {
-      if (KEYS[key].live && p[key] !== was[key]) keys[key] = scenes.fieldValue(key, p[key], scene[key + '_x'], false);
+      if (KEYS[key].live && p[key] !== was[key]) keys[key] = scenes.fieldValue(key, p[key], scene[scenes.otherOf(key)], false);
     });
     if (p.solver !== was.solver) keys.solver = p.solver;
     if (p.material !== was.material && own(scenes.MATERIALS, p.material)) {

@@ -71,7 +71,7 @@ window.clothScenes = (function () {
   });
   const DEFAULT_PARAMS = { solver: SCHEMA.defaultSolver, substeps: SOLVERS[SCHEMA.defaultSolver].substeps,
                            iterations: SOLVERS[SCHEMA.defaultSolver].iterations,
-                           gravity: SCHEMA.keys.gravity.fallback[1], damping: 1, tear: 0, material: fabrics.preset };
+                           damping: 1, tear: 0, material: fabrics.preset };
 
   // The named fabric a scene's density and compliance are, or 'custom' (a scene of its own,
   // or one without a density: every vertex 1 kg, as scenes were before materials).
@@ -87,16 +87,28 @@ window.clothScenes = (function () {
   // The Scene section's number fields (cloth/scene.py SCENE_FIELDS), in order.
   const SCENE_FIELDS = SCHEMA.sceneFields.map(function (f) { return f.key; });
 
-  // A Scene-section field's value in a scene as the core holds it (a cloth's `scene`): a
-  // point key's field is its y component.
+  // A point key's field is one of its components (SCENE_FIELDS' axis): the Scene attribute
+  // that holds it, and the other one's.
+  const AXIS = {};
+  SCHEMA.sceneFields.forEach(function (f) { AXIS[f.key] = f.axis; });
+  function shown(key) { return key + (AXIS[key] ? '_y' : '_x'); }
+  function other(key) { return key + (AXIS[key] ? '_x' : '_y'); }
+  // The other live fields start from their keys' defaults (gravity down, still air).
+  SCHEMA.sceneFields.forEach(function (f) {
+    const k = SCHEMA.keys[f.key];
+    if (k.live && !own(DEFAULT_PARAMS, f.key)) DEFAULT_PARAMS[f.key] = k.kind === 'point' ? k.fallback[f.axis] : k.fallback;
+  });
+
+  // A Scene-section field's value in a scene as the core holds it (a cloth's `scene`).
   function fieldOf(scene, key) {
-    return SCHEMA.keys[key].kind === 'point' ? scene[key + '_y'] : scene[key];
+    return SCHEMA.keys[key].kind === 'point' ? scene[shown(key)] : scene[key];
   }
 
-  // The value a scene object takes for field `key` at value v (a point keeps its x; a key
-  // whose 0 means none takes null); undefined for none where `omit` (a scene written whole).
-  function fieldValue(key, v, x, omit) {
-    if (SCHEMA.keys[key].kind === 'point') return [x, v];
+  // The value a scene object takes for field `key` at value v (a point keeps its other
+  // component, `rest`; a key whose 0 means none takes null); undefined for none where `omit`
+  // (a scene written whole).
+  function fieldValue(key, v, rest, omit) {
+    if (SCHEMA.keys[key].kind === 'point') return AXIS[key] ? [rest, v] : [v, rest];
     if (LIMITS[key].off && !(v > 0)) return omit ? undefined : null;
     return v;
   }
@@ -107,7 +119,7 @@ window.clothScenes = (function () {
   function writeParams(obj, p) {
     SCENE_FIELDS.forEach(function (key) {
       if (!SCHEMA.keys[key].live) return;
-      const v = fieldValue(key, p[key], Array.isArray(obj[key]) ? obj[key][0] : 0, true);
+      const v = fieldValue(key, p[key], Array.isArray(obj[key]) ? obj[key][1 - AXIS[key]] : 0, true);
       if (v === undefined) delete obj[key]; else obj[key] = v;
     });
     obj.solver = p.solver;
@@ -294,7 +306,7 @@ window.clothScenes = (function () {
     return Object.assign({}, DEFAULT_PARAMS, PRESETS[name].params);
   }
 
-  return { SCENE_FIELDS: SCENE_FIELDS, fieldOf: fieldOf, fieldValue: fieldValue, writeParams: writeParams,
+  return { SCENE_FIELDS: SCENE_FIELDS, fieldOf: fieldOf, fieldValue: fieldValue, otherOf: other, writeParams: writeParams,
            PRESETS: PRESETS, LIMITS: LIMITS, SOLVERS: SOLVERS, MATERIALS: MATERIALS, materialOf: materialOf,
            PAGE_LIMITS: PAGE_LIMITS,
            REAL_TIME_WORK: REAL_TIME_WORK, defaults: defaults, make: make, viewFor: viewFor,

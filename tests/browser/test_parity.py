@@ -126,6 +126,20 @@ SCENES = {
         {'frame': 7, 'op': 'set', 'scene': {'solver': 'jakobsen'}},
         {'frame': 9, 'op': 'set', 'scene': {'gravity': [1, -4], 'iterations': 5}},
         {'frame': 12, 'op': 'set', 'scene': {'solver': 'xpbd', 'dt': 0.02, 'compliance': 1e-4}}]), 30),
+    # The air (issue #24): a steady wind on a compliant curtain, gusts on a free cloth with a
+    # hand and a cut, and the wind set live and taken away again.
+    'wind-steady': (grid(8, 6, pins=list(range(8)), density=0.2, compliance=0.002, wind=[6.0, 0.5],
+                         drag=0.3), 90),
+    'wind-gusts-hand-cut': (grid(7, 7, pins=[0, 6], wind=[-3.0, 2.0], drag=2.5, gust=[0.8, 0.37],
+                                 shear=True, actions=[
+        {'frame': 10, 'op': 'grab', 'vertex': 45},
+        {'frame': 14, 'op': 'move', 'vertex': 45, 'to': [0.4, -1.2]},
+        {'frame': 20, 'op': 'cut', 'from': [0.1, -0.3], 'to': [0.9, -0.35]},
+        {'frame': 30, 'op': 'release', 'vertex': 45}]), 80),
+    'wind-set-live': (grid(6, 5, pins=[0, 5], solver='jakobsen', actions=[
+        {'frame': 5, 'op': 'set', 'scene': {'wind': [8, 0], 'drag': 1.0}},
+        {'frame': 25, 'op': 'set', 'scene': {'gust': [1.5, 0.5], 'solver': 'xpbd'}},
+        {'frame': 45, 'op': 'set', 'scene': {'wind': [0, 0]}}]), 70),
     'recording-frames-key': (grid(6, 5, pins=[0, 5], frames=33, actions=[
         {'frame': 33, 'op': 'grab', 'vertex': 20, 'to': [0.1, 0.2]}]), None),
     # Tearing past a limit while pulled far beyond reach, and blades through the cloth (a piece
@@ -216,7 +230,10 @@ def scenes(draw):
                           ('tolerance', st.sampled_from([0, 1e-3])), ('sleep', st.booleans()),
                           ('dt', st.sampled_from([1 / 60, 0.25])),
                           ('tear', st.sampled_from([0.01, 0.1, 0.5, 2.0])),
-                          ('gravity', st.tuples(coord, st.floats(-30, 30)).map(list))]:
+                          ('gravity', st.tuples(coord, st.floats(-30, 30)).map(list)),
+                          ('wind', st.tuples(st.floats(-40, 40), st.floats(-40, 40)).map(list)),
+                          ('drag', st.sampled_from([0, 0.05, 1.0, 50.0])),
+                          ('gust', st.tuples(st.floats(0, 3), st.floats(0.01, 2)).map(list))]:
         if draw(st.booleans()):
             s[key] = draw(strategy)
     actions, held = [], set()
@@ -232,7 +249,9 @@ def scenes(draw):
             for key, strategy in [('substeps', st.integers(1, 4)), ('iterations', st.integers(0, 8)),
                                   ('solver', st.sampled_from(['jakobsen', 'xpbd'])),
                                   ('damping', st.floats(0, 3)), ('tethers', st.booleans()),
-                                  ('gravity', st.tuples(coord, coord).map(list))]:
+                                  ('gravity', st.tuples(coord, coord).map(list)),
+                                  ('wind', st.tuples(coord, coord).map(list)),
+                                  ('drag', st.floats(0, 5))]:
                 if draw(st.booleans()):
                     keys[key] = draw(strategy)
             actions.append({'frame': frame, 'op': 'set', 'scene': keys})
