@@ -7,7 +7,7 @@ import sys
 
 import pytest
 
-from browser_helpers import ROOT, wait_until
+from browser_helpers import ROOT, load_paused, wait_until
 
 PAIR = [{'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}, {'solver': 'xpbd', 'substeps': 8, 'iterations': 1}]
 COLS, ROWS = 40, 30           # the curtain preset
@@ -322,12 +322,14 @@ def test_a_scene_setting_in_compare_mode_shows_in_the_editor_and_survives_a_grid
     assert editor_values(pg, 'iterations') == ['7', '7']
     pg.js('clothApp.reset()')
     assert [json.loads(p['scene'])['iterations'] for p in panels(pg)] == [7, 7]
-    # The recording made before the grid change: its `set` at frame 10, replayed, moves the
-    # editor at that frame, not before.
-    pg.js('(t) => clothApp.loadScene(t)', recorded)
-    pg.js('clothApp.setPaused(true)')
+    # The recording made before the grid change: its `set`, replayed, moves the editor at its
+    # frame, not before.
+    at = [a['frame'] for a in json.loads(recorded)['actions'] if a['op'] == 'set'][0]
+    load_paused(pg, recorded)
     assert editor_values(pg, 'iterations') == ['20', '1']
-    pg.js('clothApp.advance(12)')
+    pg.js('(n) => clothApp.advance(n)', at - 1)
+    assert editor_values(pg, 'iterations') == ['20', '1']
+    pg.js('clothApp.advance(1)')
     assert editor_values(pg, 'iterations') == ['7', '7']
 
 

@@ -85,7 +85,7 @@ MALFORMED = [
     '{"cols": 3, "rows": 2, "spacing": 0.1, "pins": [6]}',
     '{"cols": 3, "rows": 2, "spacing": 0.1, "gravity": [0, "down"]}',
     '{"cols": 100000, "rows": 100000, "spacing": 0.1}',
-    '{"cols": 3, "rows": 2, "spacing": 0.1, "wind": [1, 0]}',
+    '{"cols": 3, "rows": 2, "spacing": 0.1, "breeze": [1, 0]}',
     '{"cols": 3, "rows": 2, "spacing": 0.1, "actions": [{"frame": 0, "op": "grab", "vertex": 9}]}',
 ]
 
