@@ -6,7 +6,7 @@ returns, and the parity tests compare its CPython and browser results number for
 
 from cloth.host import to_json, kind_of, is_finite, parse_json
 from cloth.scene import (parse_scene, fail, MAX_FRAMES, MATERIALS,
-                         DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large, KEYS, SOLVERS,
+                         DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large, KEYS, SOLVERS, SOLVER_LABELS,
                          DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES,
                          unused_settings, SCENE_FIELDS)
 from cloth.sim import Cloth, count_edges, frame, measure, grab, move, move_by, release, pin, unpin, cut, \
@@ -33,11 +33,6 @@ def check(scene_json_text, panel=-1):
     return parse_scene(scene_json_text, panel)
 
 
-def build(scene):
-    """A checked Scene (parse_scene) -> a Cloth: the page checks its own limits between."""
-    return Cloth(scene)
-
-
 def materials():
     """The named fabrics of the page's Material control (scene.MATERIALS: name, label,
     density kg/m^2, stiffness N/m) and the presets' own, declared once for both runtimes."""
@@ -48,9 +43,10 @@ def schema():
     """The scene's keys as scene.KEYS declares them (each a Key: kind, range and its words,
     label, unit, live, panel, defaults, the page's field range), and the limits and names the
     page's other parts check against: [keys, solvers, default solver, action ops, most actions,
-    most panels, most vertices, the Scene section's fields]. The page derives its fields, the compare editor and the
+    most panels, most vertices, the Scene section's fields, the solvers' labels]. The page derives its fields, the compare editor and the
     recorder from these, so that a key is declared once."""
-    return [KEYS, SOLVERS, DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, SCENE_FIELDS]
+    return [KEYS, SOLVERS, DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, SCENE_FIELDS,
+            SOLVER_LABELS]
 
 
 def unused(cloth):

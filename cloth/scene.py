@@ -24,6 +24,8 @@ MAX_DEPTH = 32
 
 SOLVERS = ['jakobsen', 'xpbd']
 DEFAULT_SOLVER = 'xpbd'
+# What the page's Solver menu and compare panels call SOLVERS[i].
+SOLVER_LABELS = ['Jakobsen (the seed\'s method)', 'XPBD + tethers, cells, lines']
 OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut']
 MAX_TEAR = 1e6
 MAX_PANELS = 4

@@ -46,7 +46,7 @@
   const state = {
     panels: [], cloth: null, base: null, sceneText: '', sceneObj: null, view: null,
     preset: 'curtain', params: null, compare: [],
-    mode: 'strain', scaleMode: 'auto', fullScale: 0.05,
+    mode: 'strain', scaleMode: 'auto', fullScale: 0.05, charts: true,
     paused: false, acc: 0, last: -1, renders: 0, dirty: true, needMeasure: true,
     renderMs: NaN, fps: NaN, lastReadout: 0, scale: 0,
     wanted: 0, played: 0, speed: 1,   // seconds of wall clock and of simulation since the last readout
@@ -54,7 +54,7 @@
     rects: [],          // the panels' rectangles in the canvas, CSS px
     trail: false,       // the blade's trail is fading out: keep drawing it
     linkPending: false, // a link is being copied (the clipboard answers later)
-    slowWarning: '',    // what load() warned of a scene too heavy for real time ('' for none)
+    slowWork: 0,        // a frame's edge updates, where load() warned they are too many for real time
     relayouts: 0,       // how many times the views were laid out again (info(): the tests)
     cappedAt: -Infinity, // when the max_speed note was last said (performance.now ms)
     replaying: false,   // a replay was playing when the last note about it was said
@@ -125,8 +125,9 @@
   // Load scene JSON text. On a bad scene: show the message, keep the old scene
   // running, and throw an Error with the core's message.
   // holds: [{id, k}] pointers that go on holding vertex k of the new cloth (a grid change);
-  // any other pointer lets go.
-  function load(text, preset, view, holds) {
+  // any other pointer lets go. pinEdits: the pins a person set or removed that the new scene
+  // carries over (a grid change), {} otherwise.
+  function load(text, preset, view, holds, pinEdits) {
     let obj, opened;
     try {
       // The core checks the scene (its messages, as in the CLI); then the page's limits,
@@ -151,7 +152,7 @@
     });
     state.cloth = sess.panels[0];
     state.base = sess.base;
-    state.pinEdits = {};
+    state.pinEdits = pinEdits || {};
     state.sceneText = text;
     state.sceneObj = obj;
     state.preset = preset;
@@ -182,10 +183,8 @@
     ui.setParams(state.params);
     if (renderer.ok && !renderer.lost) render();
     const work = scenes.workOf(obj) * Math.max(1, state.compare.length);
-    state.slowWarning = work > scenes.REAL_TIME_WORK ?
-      'This scene needs about ' + work.toExponential(1) + ' edge updates a frame: ' +
-      'expect slow motion on an ordinary machine' : '';
-    if (state.slowWarning) ui.note(state.slowWarning);
+    state.slowWork = work > scenes.REAL_TIME_WORK ? work : 0;
+    if (state.slowWork) ui.note(scenes.slowNote(state.slowWork));
     state.replaying = sess.replay_end > 0;
     if (sess.replay_end === 0) { session.atReplayEnd(sess); setPaused(true); }
     else if (sess.replay_end > 0) setPaused(false);
@@ -201,12 +200,17 @@
     if (gestures.count() > 0) {
       gestures.held().forEach(function (h) { if (sess.person[h.k] === 0) gestures.forget(h.k); });
     }
-    state.params = paramsOf(state.base);
+    showSettings();
     settings.followSets();
-    ui.setParams(state.params);
-    ui.setSolver(state.params.solver);
     state.needMeasure = true;
     state.dirty = true;
+  }
+
+  // The settings panel shows what the scene's settings are now (state.base's).
+  function showSettings() {
+    state.params = paramsOf(state.base);
+    ui.setParams(state.params);
+    ui.setSolver(state.params.solver);
   }
 
   // ---- replay, recording, sharing ---------------------------------------------
@@ -227,10 +231,6 @@
     return session.recordingText(sess);
   }
 
-  function recordingName() {
-    return 'cloth-' + (state.preset || 'scene') + (state.compare.length ? '-compare' : '') + '-' +
-      session.recordingComplete(sess) + 'f.json';
-  }
 
   // Restart the recording from frame 0 at real speed.
   function replay() {
@@ -240,7 +240,8 @@
   }
 
   function exportRecording() {
-    return share.exportText(recordingText(), recordingName(), ui.note);
+    return share.exportText(recordingText(), share.fileName(state.preset, state.compare.length > 0,
+                                                            session.recordingComplete(sess)), ui.note);
   }
 
   function link() {
@@ -302,7 +303,8 @@
   }
 
   function setCharts(on) {
-    document.getElementById('charts').hidden = !on;
+    state.charts = !!on;
+    ui.setCharts(state.charts);
     if (on) charts.draw();
     relayout();
   }
@@ -331,9 +333,6 @@
     state.dirty = true;
   }
 
-  const AUTO_FLOOR = window.clothReadouts.AUTO_FLOOR;
-  document.getElementById('auto-floor').textContent = String(AUTO_FLOOR);
-
   // ---- stepping and drawing -------------------------------------------------
 
   function allAsleep() {
@@ -359,8 +358,8 @@
       atReplayEnd();
       return n;
     }
-    const share_ = state.panels.length > 1 ? budgetMs / state.panels.length : budgetMs;
-    const done = runner.stepPanel(state.panels[0].run, sess, 0, n, budgetMs > 0 ? share_ : 0);
+    const each = state.panels.length > 1 ? budgetMs / state.panels.length : budgetMs;
+    const done = runner.stepPanel(state.panels[0].run, sess, 0, n, budgetMs > 0 ? each : 0);
     for (let i = 1; i < state.panels.length; i++) runner.stepPanel(state.panels[i].run, sess, i, done, 0);
     session.framesRan(sess, done, from);
     scripted(sess.script_next[0] > from);
@@ -392,21 +391,7 @@
 
   const overlays = window.clothOverlays.create(canvas, [document.getElementById('legend'),
     document.getElementById('hud'), document.getElementById('charts')], document.getElementById('overlays'));
-  // Every held vertex of every panel, and its hand (which a hand of finite strength's vertex
-  // may lag behind or stop short of), in canvas CSS px, to `visit` until it says stop.
-  function heldPoints(visit) {
-    for (let j = 0; j < state.panels.length; j++) {
-      const c = state.panels[j].cloth, d = state.panels[j].draw;
-      for (let k = 0; k < c.n_verts; k++) {
-        if (c.held[k] === 0) continue;
-        const p = d.toCanvas(c.pos[2 * k], c.pos[2 * k + 1]);
-        if (visit(p[0], p[1])) return true;
-        const q = d.toCanvas(c.target[2 * k], c.target[2 * k + 1]);
-        if (visit(q[0], q[1])) return true;
-      }
-    }
-    return false;
-  }
+  function heldPoints(visit) { return stage.heldPoints(state.panels, visit); }
 
   function render() {
     if (!state.cloth || !renderer.ok || renderer.lost) return;
@@ -441,14 +426,14 @@
     ui.setPaused(state.paused);
   }
 
-  const hud = window.clothReadouts.create(ui, compareUI, runner);
+  const numbers = window.clothReadouts.create(ui, compareUI, runner);
   function readouts(now) {
     if (now - state.lastReadout < READOUT_MS || !state.cloth) return;
     state.lastReadout = now;
     overlays.measure();
     if (state.wanted > 0) state.speed = state.played / state.wanted;
     state.wanted = 0; state.played = 0;
-    hud.show(state, allAsleep());
+    numbers.show(state, allAsleep());
     ui.setRecording({ frames: sess.frame, actions: session.recordingCount(sess), full: session.recordingFull(sess),
                       complete: session.recordingComplete(sess), replayEnd: sess.replay_end });
   }
@@ -458,7 +443,7 @@
   function panelRms(i) { return state.panels[i].cloth.rms_strain; }
   function panelMs(i) { return state.panels[i].simMs; }
   function sampleCharts(every) {
-    if (charts.sample(performance.now(), panelRms, panelMs, every) && !document.getElementById('charts').hidden) charts.draw();
+    if (charts.sample(performance.now(), panelRms, panelMs, every) && state.charts) charts.draw();
   }
 
   function tick(nowMs) {
@@ -504,14 +489,10 @@
   const gestures = window.clothGestures.create({
     // client px -> {panel, x, y} world metres in the panel under the point (panel -1: none)
     locate: function (clientX, clientY) {
-      const r = canvas.getBoundingClientRect(), cx = clientX - r.left, cy = clientY - r.top;
-      const i = renderer.ok ? stage.panelAt(state.panels, cx, cy) : -1;
-      const w = i >= 0 ? state.panels[i].draw.toWorld(cx, cy) : [NaN, NaN];
-      return { panel: i, x: w[0], y: w[1] };
+      return renderer.ok ? stage.locate(canvas, state.panels, clientX, clientY) : { panel: -1, x: NaN, y: NaN };
     },
     toWorld: function (panel, clientX, clientY) {
-      const r = canvas.getBoundingClientRect();
-      return state.panels[Math.min(panel, state.panels.length - 1)].draw.toWorld(clientX - r.left, clientY - r.top);
+      return stage.toWorld(canvas, state.panels[Math.min(panel, state.panels.length - 1)], clientX, clientY);
     },
     pick: function (panel, x, y, radiusCss) {
       if (!state.cloth || !renderer.ok || panel < 0) return -1;
@@ -550,8 +531,15 @@
 
   // The panel's settings (settings.js): a `set` through the session, or a new grid.
   const settings = window.clothSettings.create({
-    state: state, sess: function () { return sess; }, load: load, acted: acted, ui: ui,
-    compareUI: compareUI, gestures: gestures,
+    state: state, sess: function () { return sess; }, load: load, acted: acted, ui: ui, gestures: gestures,
+    followed: function (list) { state.compare = list; compareUI.render(list); },
+    // Reset restarts with the new settings.
+    retuned: function (obj) {
+      state.sceneObj = obj;
+      state.sceneText = JSON.stringify(obj);
+      showSettings();
+      state.dirty = true;
+    },
   });
 
   // The views laid out again (a resize, the charts shown or hidden): a held vertex stays under
@@ -570,7 +558,7 @@
       relayout();
       if (!observed) return;
       render();  // same task as the resize: no blank frame
-      if (!document.getElementById('charts').hidden) charts.draw();
+      if (state.charts) charts.draw();
     });
   }
 
@@ -579,7 +567,7 @@
   window.clothSeam.publish({
     state: function () { return state; }, sess: function () { return sess; }, canvas: canvas,
     renderer: renderer, charts: charts, ui: ui, runner: runner, session: session,
-    bladeOn: function () { return bladeOn; }, allAsleep: allAsleep, autoFloor: AUTO_FLOOR, render: render,
+    bladeOn: function () { return bladeOn; }, allAsleep: allAsleep, autoFloor: window.clothReadouts.AUTO_FLOOR, render: render,
     setPaused: setPaused, advance: advance, recordingText: recordingText, link: link, replay: replay,
     exportRecording: exportRecording, setCompare: setCompare, setColorMode: setColorMode,
     loadScene: loadScene, setScaleMode: setScaleMode, setFullScale: setFullScale, usePreset: usePreset,
@@ -594,10 +582,7 @@
   // most of it. The Live charts box shows them.
   {
     const r = canvas.getBoundingClientRect();
-    if (r.width < 420 || r.height < 420) {
-      document.getElementById('charts-on').checked = false;
-      document.getElementById('charts').hidden = true;
-    }
+    if (r.width < 420 || r.height < 420) { state.charts = false; ui.setCharts(false); }
   }
   ui.setPaused(false);
   try {

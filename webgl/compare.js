@@ -1,5 +1,4 @@
-// Compare mode's own parts: where the panels go in the canvas, the label over each panel,
-// and the editor of each panel's settings in the side panel. Holds no simulation state: the
+// Compare mode's own parts: the label over each panel and the editor of each panel's settings in the side panel. Holds no simulation state: the
 // app owns the panels' cloths and tells this what to show.
 //
 // A comparison is the scene's `compare` list (cloth/scene.py): 2 to 4 objects of scene keys,
@@ -10,7 +9,6 @@
 window.clothCompare = (function () {
   const SCHEMA = window.clothCore.schema();
   const MAX_PANELS = SCHEMA.maxPanels;      // cloth/scene.py MAX_PANELS
-  const GAP = 4;        // CSS px between panels
   // The one-click pair: the seed's method against the default, each spelled out so that a
   // scene that set its own solver does not make them the same.
   const SEED_VS_DEFAULT = ['jakobsen', SCHEMA.defaultSolver].map(function (name) {
@@ -38,26 +36,6 @@ window.clothCompare = (function () {
       }));
     }
     return [own, ['true', 'on'], ['false', 'off']];
-  }
-
-  // Rectangles for n panels in a w x h canvas (CSS px): the grid of columns x rows that
-  // gives each panel's view box (aspect bw / bh) the most pixels per metre; side by side on
-  // a wide screen, stacked on a tall or narrow one, 2 x 2 for four on a square one.
-  function layout(n, w, h, bw, bh) {
-    let best = null;
-    for (let cols = 1; cols <= n; cols++) {
-      const rows = Math.ceil(n / cols);
-      if ((cols - 1) * rows >= n) continue;   // an empty column
-      const pw = (w - GAP * (cols - 1)) / cols, ph = (h - GAP * (rows - 1)) / rows;
-      const scale = Math.min(pw / bw, ph / bh);
-      if (!best || scale > best.scale + 1e-9) best = { cols: cols, rows: rows, pw: pw, ph: ph, scale: scale };
-    }
-    const out = [];
-    for (let i = 0; i < n; i++) {
-      const c = i % best.cols, r = Math.floor(i / best.cols);
-      out.push({ x: c * (best.pw + GAP), y: r * (best.ph + GAP), w: best.pw, h: best.ph });
-    }
-    return out;
   }
 
   function $(id) { return document.getElementById(id); }
@@ -221,9 +199,8 @@ window.clothCompare = (function () {
       if (n.textContent !== numbers) n.textContent = numbers;
     }
 
-    return { render: render, placeLabels: placeLabels, setLabel: setLabel,
-             overrides: function () { return current.map(copy); } };
+    return { render: render, placeLabels: placeLabels, setLabel: setLabel };
   }
 
-  return { create: create, layout: layout, SEED_VS_DEFAULT: SEED_VS_DEFAULT, MAX_PANELS: MAX_PANELS };
+  return { create: create };
 })();

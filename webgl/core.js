@@ -27,9 +27,9 @@ window.clothCore = (function (api) {
   }
 
   const SCHEMA = (function () {
-    const s = api.schema();
+    const given = api.schema();
     const keys = {}, order = [];
-    s[0].forEach(function (k) {
+    given[0].forEach(function (k) {
       keys[k.key] = {
         kind: k.kind, min: k.lo, max: k.hi, minOpen: k.lo_open, words: k.words, label: k.label,
         unit: k.unit, live: k.live, panel: k.panel, fallback: k.fallback, bySolver: k.by_solver,
@@ -37,9 +37,10 @@ window.clothCore = (function (api) {
       };
       order.push(k.key);
     });
-    return { keys: keys, order: order, solvers: s[1].slice(), defaultSolver: s[2], ops: s[3].slice(),
-             maxActions: s[4], maxPanels: s[5], maxVertices: s[6],
-             sceneFields: s[7].map(function (f) { return { key: f[0], hint: f[1], axis: f[2] }; }) };
+    return { keys: keys, order: order, solvers: given[1].slice(), defaultSolver: given[2], ops: given[3].slice(),
+             maxActions: given[4], maxPanels: given[5], maxVertices: given[6],
+             sceneFields: given[7].map(function (f) { return { key: f[0], hint: f[1], axis: f[2] }; }),
+             solverLabels: given[8].slice() };
   })();
 
   const core = {
@@ -53,24 +54,18 @@ window.clothCore = (function (api) {
     }),
     // load(sceneJsonText) -> a live Cloth (typed arrays, frame(), measure(), grab()...).
     load: wrap(function (text) { return api.load(text); }),
-    // build(scene) -> a Cloth from a scene parseScene checked (no second parse).
-    build: wrap(function (scene) { return api.build(scene); }),
-    // setSettings(cloth, keysJsonText): new settings for the running cloth, as an object of
-    // scene keys (cloth/api.py set_settings: what a recorded `set` action does); throws,
-    // changing nothing, on bad keys.
-    setSettings: wrap(function (cloth, text) { return api.set_settings(cloth, text); }),
-    // materials() -> {list: [[name, label, density kg/m^2, stiffness N/m], ...], preset: name}
-    // (cloth/scene.py MATERIALS: the Material control's fabrics, declared there once).
     // unused(cloth) -> what of its settings its solver does not use, in words ('' for none).
     unused: function (cloth) { return api.unused(cloth); },
+    // materials() -> {list: [[name, label, density kg/m^2, stiffness N/m], ...], preset: name}
+    // (cloth/scene.py MATERIALS: the Material control's fabrics, declared there once).
     materials: function () { const m = api.materials(); return { list: m[0], preset: m[1] }; },
     // schema() -> the scene's keys and the limits the page checks against, declared once in
     // cloth/scene.py (KEYS) and read here (cloth/api.py schema): {keys: {name: {kind, min,
     // max, minOpen, words, label, unit, live, panel, fallback, bySolver, field: {min, max,
     // step, int}}}, order: [names], solvers, defaultSolver, ops, maxActions, maxPanels,
-    // maxVertices, sceneFields: [{key, hint, axis}] (the Scene section's number fields; axis: a point
-    // key's component)}. Made
-    // once; callers must not change it.
+    // maxVertices, sceneFields: [{key, hint, axis}] (the Scene section's number fields; axis:
+    // a point key's component), solverLabels (by solvers' index)}. Made once; callers must
+    // not change it.
     schema: function () { return SCHEMA; },
     // edgesOf(cols, rows, shear) -> how many edges such a grid has (cloth/sim.py count_edges).
     edgesOf: function (cols, rows, shear) { return api.edges_of(cols, rows, shear); },
@@ -79,8 +74,6 @@ window.clothCore = (function (api) {
     sceneLimit: function () { const l = api.scene_limit(); return { bytes: l[0], message: l[1] }; },
     message: message,
   };
-  // parseScene(sceneJsonText[, panel]) -> the checked scene, nothing built (cloth/api.py
-  // check); with a panel index (from 0), the scene of that panel of its `compare` list.
   // What the renderer draws of a cloth, and all it reads: positions, the edges' ends, one
   // value per edge (its strain, `diff`) and per vertex (its stress), and the markers' flags.
   // Views of the core's own arrays, put into `out` (made once per panel: no allocation a
@@ -99,6 +92,8 @@ window.clothCore = (function (api) {
     out.held = cloth.held;
     return out;
   };
+  // parseScene(sceneJsonText[, panel]) -> the checked scene, nothing built (cloth/api.py
+  // check); with a panel index (from 0), the scene of that panel of its `compare` list.
   core.parseScene = wrap(function (text, panel) { return api.check(text, panel === undefined ? -1 : panel); });
 
   // session: a scene's panels under one pair of hands, their scripts, the recording and the

@@ -33,11 +33,12 @@ window.clothReadouts = (function () {
   // can follow (metres in a frame), or settings that pump energy (one sweep per step on an
   // undamped grid; damping does not cure it: measured, 1.8 million capped vertex-steps with
   // damping 1).
+  const DEFAULT_MAX_SPEED = window.clothCore.schema().keys.max_speed.fallback;
   function cappedNote(cloth) {
-    const speed = cloth.scene.max_speed;
-    const capped = 'speeds were capped at ' + (speed < 1000 ? 'the scene\'s max_speed of ' : 'max_speed, ') + speed + ' m/s';
+    const speed = cloth.scene.max_speed, own = speed < DEFAULT_MAX_SPEED;
+    const capped = 'speeds were capped at ' + (own ? 'the scene\'s max_speed of ' : 'max_speed, ') + speed + ' m/s';
     if (cloth.n_held > 0) return 'A very fast drag: ' + capped + ' (the hand moved faster than the cloth can follow)';
-    if (speed < 1000) return capped.charAt(0).toUpperCase() + capped.slice(1);
+    if (own) return capped.charAt(0).toUpperCase() + capped.slice(1);
     return 'Unstable settings: ' + capped + '; use more iterations or substeps' +
       (cloth.use_xpbd ? '' : ', or the default solver');
   }
@@ -45,6 +46,7 @@ window.clothReadouts = (function () {
   function fmt(v) { return window.clothUI.fmt(v, 4); }
 
   function create(ui, compareUI, runner) {
+    ui.setAutoFloor(AUTO_FLOOR);
     // The readouts for the app's state (panels, rects, paused, speed, renderMs, fps, scale,
     // scaleMode, mode); asleep: every panel is at rest.
     function show(state, asleep) {
@@ -66,9 +68,10 @@ window.clothReadouts = (function () {
           // A narrow panel (a phone, four panels) gets the short label: the solver and its
           // steps; the RMS strain and the cost. The numbers come first on their line and are
           // never cut (compare.js).
-          const r = state.rects[i], small = !r || r.w < 340, label = runner.label(p.cloth);
+          const r = state.rects[i], small = !r || r.w < 340;
+          const label = small ? runner.headline(p.cloth) : runner.label(p.cloth);
           const ms = Number.isFinite(p.simMs) ? p.simMs.toFixed(2) + (small ? ' ms' : ' ms/frame') : 'at rest';
-          compareUI.setLabel(i, (i + 1) + ' · ' + (small ? label.split(',')[0] : label),
+          compareUI.setLabel(i, (i + 1) + ' · ' + label,
             small ? 'rms ' + fmt(p.cloth.rms_strain) + ' · ' + ms
                   : 'strain rms ' + fmt(p.cloth.rms_strain) + ' · max ' + fmt(p.cloth.max_strain) + ' · ' + ms);
         });

@@ -67,27 +67,30 @@ window.clothRunner = (function () {
 
   // What a cloth is running, as the benchmark's tables and the compare panels say it.
   function describe(cl) {
-    return { solver: cl.use_xpbd ? 'xpbd' : 'jakobsen', substeps: cl.substeps,
+    return { solver: cl.scene.solver, substeps: cl.substeps,
              iterations: cl.iterations, tethers: !!cl.use_tethers, tolerance: cl.tolerance,
              shear: !!cl.scene.shear, compliance: cl.scene.compliance, sleep: !!cl.use_sleep,
              cells: !!cl.use_cells, lines: !!cl.use_lines, damping: cl.scene.damping,
              tear: cl.tear, n_verts: cl.n_verts, n_edges: cl.n_edges };
   }
 
+  // 'xpbd S8 x 1': the solver and its steps (a narrow compare panel's label).
+  function headline(cl) { return cl.scene.solver + ' S' + cl.substeps + ' x ' + cl.iterations; }
+
   // 'xpbd S8 x 1, tethers, cells, lines, tol 0.0001' (the benchmark's setting column).
   function label(cl) {
     const d = describe(cl);
-    const parts = [d.solver + ' S' + d.substeps + ' x ' + d.iterations];
+    const parts = [headline(cl)];
     if (d.tethers) parts.push('tethers');
     if (d.cells) parts.push('cells');
     if (d.lines) parts.push('lines');
     if (d.shear) parts.push('shear');
     // The seed's method ignores compliance: only a solver that honours it says it.
-    if (d.compliance > 0 && d.solver === 'xpbd') parts.push('compliance ' + d.compliance);
+    if (d.compliance > 0 && cl.use_xpbd) parts.push('compliance ' + d.compliance);
     if (d.tolerance > 0) parts.push('tol ' + d.tolerance);
     if (d.tear > 0) parts.push('tear ' + d.tear);
     return parts.join(', ');
   }
 
-  return { run: run, step: step, panel: panel, stepPanel: stepPanel, describe: describe, label: label };
+  return { run: run, step: step, panel: panel, stepPanel: stepPanel, describe: describe, headline: headline, label: label };
 })();

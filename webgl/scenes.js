@@ -1,9 +1,12 @@
-// Scene presets and the view that fits a scene.
+// The page's side of a scene: the presets, the fields' limits and the one reading of a typed
+// number, the solvers and fabrics the menus offer (all from the core's schema), the panel's
+// settings written into a scene object, the page's limits on a scene's work, and the view
+// that fits a scene.
 //
-// A preset turns the UI's parameters (grid size, iterations, substeps, gravity)
-// into the scene JSON the core reads, so a preset and a hand-written scene go
-// through the same clothCore.load(). View hints live beside the scene, never in
-// it: the core rejects keys it does not know.
+// A preset turns the panel's settings (grid size, solver and steps, the live fields, the
+// fabric) into the scene JSON the core reads, so a preset and a hand-written scene go through
+// the same session.open(). View hints live beside the scene, never in it: the core rejects
+// keys it does not know.
 'use strict';
 
 window.clothScenes = (function () {
@@ -47,20 +50,13 @@ window.clothScenes = (function () {
     return { value: v, read: text === typed ? '' : 'read "' + typed.slice(0, 24) + '" as ' + v };
   }
 
-  // Each solver's own substeps and iterations (cloth/scene.py's Keys, by solver): picking a
-  // solver in the UI starts from these.
-  const SOLVER_LABELS = { jakobsen: 'Jakobsen (seed)', xpbd: 'XPBD + tethers, cells, lines' };
+  // Each solver's label and own substeps and iterations (cloth/scene.py SOLVER_LABELS and
+  // Keys, by solver): picking a solver in the UI starts from these.
   const SOLVERS = {};
   SCHEMA.solvers.forEach(function (name, i) {
-    SOLVERS[name] = { label: SOLVER_LABELS[name] || name, substeps: SCHEMA.keys.substeps.bySolver[i],
+    SOLVERS[name] = { label: SCHEMA.solverLabels[i], substeps: SCHEMA.keys.substeps.bySolver[i],
                       iterations: SCHEMA.keys.iterations.bySolver[i] };
   });
-  // The presets start with the core's default solver (XPBD + tethers, the best
-  // configuration on the benchmark): nearly inextensible, so strain colours are
-  // faint on a hanging cloth (auto scale still shows where the strain is).
-  // The Solver menu switches to the seed's method, which drapes and stretches.
-  // damping, air: a released cloth comes to rest within a few seconds, as fabric does
-  // (its velocity loses 1/s of itself per second); the core's default, 0, swings for minutes.
   // The Material control's fabrics (cloth/scene.py MATERIALS): name -> {label, density kg/m^2,
   // stiffness N/m, compliance m/N}. The presets hang in the core's preset fabric (jersey),
   // whose stretch under its own weight is visible in the colours.
@@ -69,6 +65,9 @@ window.clothScenes = (function () {
   fabrics.list.forEach(function (m) {
     MATERIALS[m[0]] = { label: m[1], density: m[2], stiffness: m[3], compliance: m[3] > 0 ? 1 / m[3] : 0 };
   });
+  // The presets start with the core's default solver and its steps. Damping 1/s, still air's:
+  // a released cloth comes to rest within a few seconds, as fabric does (its velocity loses
+  // 1/s of itself per second); the core's default, 0, swings for minutes.
   const DEFAULT_PARAMS = { solver: SCHEMA.defaultSolver, substeps: SOLVERS[SCHEMA.defaultSolver].substeps,
                            iterations: SOLVERS[SCHEMA.defaultSolver].iterations,
                            damping: 1, tear: 0, material: fabrics.preset };
@@ -218,7 +217,7 @@ window.clothScenes = (function () {
     const p = Object.assign({}, DEFAULT_PARAMS, preset.params, params || {});
     const spacing = spacingFor(preset, p.cols, p.rows);
     const scene = writeParams({ cols: p.cols, rows: p.rows, spacing: spacing, pins: preset.pins(p.cols, p.rows),
-                                dt: 1 / 60 }, p);
+                                dt: SCHEMA.keys.dt.fallback }, p);
     if (preset.actions) scene.actions = preset.actions(p.cols, p.rows, spacing);
     const w = (p.cols - 1) * spacing, h = (p.rows - 1) * spacing;
     const view = preset.view ? preset.view(w, h) : viewFor(scene, preset.sag);
@@ -240,10 +239,14 @@ window.clothScenes = (function () {
   // a frame is one task that cannot be split, so a scene beyond these would stop the page
   // answering a person (1000x1000 took 25-40 s a frame). The CLI has its own, larger limits.
   const PAGE_LIMITS = { vertices: LIMITS.cols.max * LIMITS.rows.max, work: 4e6 };
-  // A frame's work estimated before loading, in edge updates: per step the sweeps, plus, for
-  // XPBD, tethers, cells and line solves (about 6 per vertex, measured by projections).
+  // A frame's work estimated before loading, in edge updates: per step the sweeps, plus, where
+  // they run, tethers, cells and line solves (about 6 per vertex, measured by projections).
   // Above REAL_TIME_WORK a frame takes more than its 1/60 s on an ordinary machine.
   const REAL_TIME_WORK = 1e6;
+  function slowNote(work) {
+    return 'This scene needs about ' + work.toExponential(1) + ' edge updates a frame: ' +
+      'expect slow motion on an ordinary machine';
+  }
 
   function workOf(scene) {
     const cols = scene.cols | 0, rows = scene.rows | 0;
@@ -253,7 +256,11 @@ window.clothScenes = (function () {
     const iterations = Number.isFinite(scene.iterations) ? scene.iterations : d.iterations;
     const n = cols * rows;
     const m = window.clothCore.edgesOf(Math.max(cols, 1), Math.max(rows, 1), scene.shear === true);
-    return substeps * (Math.max(iterations, 0) * m + (solver === 'xpbd' ? 6 * n : 0));
+    const index = SCHEMA.solvers.indexOf(solver);
+    const extras = ['tethers', 'cells', 'lines'].some(function (key) {
+      return typeof scene[key] === 'boolean' ? scene[key] : SCHEMA.keys[key].bySolver[index];
+    });
+    return substeps * (Math.max(iterations, 0) * m + (extras ? 6 * n : 0));
   }
 
   // '' when the page can run the scene object; otherwise why not, in one sentence.
@@ -309,6 +316,6 @@ window.clothScenes = (function () {
   return { SCENE_FIELDS: SCENE_FIELDS, fieldOf: fieldOf, fieldValue: fieldValue, otherOf: other, writeParams: writeParams,
            PRESETS: PRESETS, LIMITS: LIMITS, SOLVERS: SOLVERS, MATERIALS: MATERIALS, materialOf: materialOf,
            PAGE_LIMITS: PAGE_LIMITS,
-           REAL_TIME_WORK: REAL_TIME_WORK, defaults: defaults, make: make, viewFor: viewFor,
+           REAL_TIME_WORK: REAL_TIME_WORK, slowNote: slowNote, defaults: defaults, make: make, viewFor: viewFor,
            clamp: clamp, readNumber: readNumber, workOf: workOf, pageLimit: pageLimit };
 })();

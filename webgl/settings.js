@@ -1,6 +1,7 @@
 // The panel's settings applied to what runs: a setting that leaves the grid as it is goes to
 // the session as a `set` (every panel, recorded); Columns and Rows make a new grid (grid.js)
-// and load it. Compare mode follows what the panels run. The app passes in what it owns.
+// and load it. Compare mode follows what the panels run. Reads the app's state; changes it
+// only through the app's own functions (followed, retuned, load).
 'use strict';
 
 window.clothSettings = (function () {
@@ -10,8 +11,9 @@ window.clothSettings = (function () {
 
   function paramsOf(cloth) { return params.of(cloth.scene); }
 
-  // app: {state (the app's state object), sess() (the session), load(text, preset, view,
-  // holds), acted(), ui, compareUI, gestures}.
+  // app: {state (the app's state object, read only), sess() (the session), load(text, preset,
+  // view, holds, pinEdits), acted(), followed(compareList) (the panels run this list now),
+  // retuned(sceneObj) (the scene object the running cloth now is), ui, gestures}.
   function create(app) {
     const state = app.state, ui = app.ui;
 
@@ -22,8 +24,7 @@ window.clothSettings = (function () {
       if (!state.compare.length) return false;
       const now = params.running(state.compare, state.panels.map(function (p) { return p.cloth.scene; }));
       if (JSON.stringify(now) === JSON.stringify(state.compare)) return false;
-      state.compare = now;
-      app.compareUI.render(now);
+      app.followed(now);
       return true;
     }
 
@@ -80,14 +81,9 @@ window.clothSettings = (function () {
       // A Solver or Material change that leaves a material unused says so (cloth/scene.py).
       const unused = keys.solver !== undefined || keys.compliance !== undefined ? core.unused(state.base) : '';
       if (unused) note = (note ? note + '; ' : '') + unused.charAt(0).toUpperCase() + unused.slice(1);
-      state.sceneObj = obj;
-      state.sceneText = JSON.stringify(obj);   // Reset restarts with the new settings
-      state.params = paramsOf(state.base);
-      ui.setParams(state.params);
-      ui.setSolver(state.params.solver);
+      app.retuned(obj);
       ui.clearError('setting');     // a refused setting's banner ends with one that applies
       ui.note(note);
-      state.dirty = true;
     }
 
     // A new grid (grid.js): pins keep their meaning, row and column; the pins a person set or
@@ -109,19 +105,17 @@ window.clothSettings = (function () {
       const edits = window.clothGrid.applyEdits(obj, state.pinEdits, m, dropped);
       const holds = app.gestures.held().map(function (h) { return { k: m.moved(h.k), was: h.k, id: h.id }; });
       try {
-        app.load(JSON.stringify(obj), preset, view, holds);
+        app.load(JSON.stringify(obj), preset, view, holds, edits);
       } catch (e) {
         ui.setParams(state.params);  // the banner shows why; the old scene runs on
         return;
       }
-      state.pinEdits = edits;
       holds.forEach(function (h) { if (h.k < 0) dropped.push('the held vertex at ' + m.place(h.was)); });
-      const notes = [note, state.slowWarning, window.clothGrid.droppedNote(dropped, p.cols, p.rows)];
+      const notes = [note, state.slowWork ? scenes.slowNote(state.slowWork) : '', window.clothGrid.droppedNote(dropped, p.cols, p.rows)];
       ui.note(notes.filter(function (t) { return !!t; }).join('; '));
     }
 
-    return { setParam: setParam, setSolver: setSolver, setMaterial: setMaterial, followSets: followSets,
-             paramsOf: paramsOf };
+    return { setParam: setParam, setSolver: setSolver, setMaterial: setMaterial, followSets: followSets };
   }
 
   return { create: create, paramsOf: paramsOf };

@@ -219,6 +219,11 @@ window.clothShare = (function () {
     return made.then(copy);
   }
 
+  // A recording's file name: the preset (or 'scene'), compare mode, and the frames it covers.
+  function fileName(preset, compared, frames) {
+    return 'cloth-' + (preset || 'scene') + (compared ? '-compare' : '') + '-' + frames + 'f.json';
+  }
+
   // Export: the recording saved as a file `name` and copied; note(text) says which.
   function exportText(text, name, note) {
     download(text, name);
@@ -257,6 +262,6 @@ window.clothShare = (function () {
     });
   }
 
-  return { exportText: exportText, copyLink: copyLink, MAX_LINK: MAX_LINK, MAX_BYTES: MAX_BYTES, linkFor: linkFor, sceneIn: sceneIn, decode: decode, fromText: fromText,
+  return { fileName: fileName, exportText: exportText, copyLink: copyLink, MAX_LINK: MAX_LINK, MAX_BYTES: MAX_BYTES, linkFor: linkFor, sceneIn: sceneIn, decode: decode, fromText: fromText,
            readFile: readFile, download: download, copy: copy, copyLater: copyLater, badByte: badByte };
 })();

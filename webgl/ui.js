@@ -4,7 +4,9 @@
 'use strict';
 
 window.clothUI = (function () {
-  const PRESET_KEYS = { '1': 'curtain', '2': 'corners', '3': 'chain', '4': 'large', '5': 'tearable' };
+  // Keys 1, 2, ... pick the presets in their order (webgl/scenes.js PRESETS).
+  const PRESET_KEYS = {};
+  Object.keys(window.clothScenes.PRESETS).forEach(function (name, i) { PRESET_KEYS[String(i + 1)] = name; });
   const ACTION_KEYS = { p: 'replay', e: 'exportFile', l: 'copyLink' };
 
   function $(id) { return document.getElementById(id); }
@@ -67,7 +69,7 @@ window.clothUI = (function () {
     // The Scene section's number fields, made from the core's list (cloth/scene.py
     // SCENE_FIELDS) before the Blade's box: captioned, ranged and read by fields.js.
     const LIMITS = window.clothScenes.LIMITS;
-    const params = window.clothScenes.SCENE_FIELDS;
+    const fieldKeys = window.clothScenes.SCENE_FIELDS;
     window.clothCore.schema().sceneFields.forEach(function (f) {
       const label = document.createElement('label'), input = document.createElement('input');
       input.id = f.key;
@@ -96,6 +98,26 @@ window.clothUI = (function () {
     el.helpClose.addEventListener('click', function () { ui.showHelp(false); });
     el.helpBox.addEventListener('click', function (e) { if (e.target === el.helpBox) ui.showHelp(false); });
     el.bannerClose.addEventListener('click', function () { ui.clearError(); });
+    // The Preset and Solver menus, from the presets' and the core's lists. `custom` is what
+    // the menu shows for a scene loaded as JSON; a person cannot pick it.
+    function option(select, value, text, title) {
+      const o = document.createElement('option');
+      o.value = value;
+      o.textContent = text;
+      if (title) o.title = title;
+      select.appendChild(o);
+      return o;
+    }
+    const PRESETS = window.clothScenes.PRESETS;
+    Object.keys(PRESETS).forEach(function (name) { option(el.preset, name, PRESETS[name].label); });
+    option(el.preset, 'custom', 'Custom (JSON)').disabled = true;
+    const SCHEMA = window.clothCore.schema(), SOLVERS = window.clothScenes.SOLVERS;
+    SCHEMA.solvers.forEach(function (name) {
+      const d = SOLVERS[name], chosen = name === SCHEMA.defaultSolver;
+      option($('solver'), name, d.label + (chosen ? ', the default' : ''),
+             d.substeps + ' step' + (d.substeps === 1 ? '' : 's') + ' a frame, ' + d.iterations +
+             ' iteration' + (d.iterations === 1 ? '' : 's') + ' each (see the README)');
+    });
     el.preset.addEventListener('change', function () { h.preset(el.preset.value); });
     $('solver').addEventListener('change', function () { h.solver($('solver').value); });
     // The Material menu and its help rows, from the core's list of fabrics.
@@ -124,7 +146,7 @@ window.clothUI = (function () {
     custom.textContent = 'Custom (scene)';
     $('material').appendChild(custom);
     $('material').addEventListener('change', function () { h.material($('material').value); });
-    params.forEach(function (key) {
+    fieldKeys.forEach(function (key) {
       window.clothFields.attach($(key), key, function (text) { h.param(key, text); });
     });
     document.querySelectorAll('input[name=mode]').forEach(function (r) {
@@ -209,7 +231,7 @@ window.clothUI = (function () {
 
     const ui = {
       setParams: function (p) {
-        params.forEach(function (key) {
+        fieldKeys.forEach(function (key) {
           if (p[key] === undefined) return;
           // a key whose 0 means none (tearing): the field shows its placeholder, "off"
           $(key).value = LIMITS[key].off && !(p[key] > 0) ? '' : String(p[key]);
@@ -221,6 +243,10 @@ window.clothUI = (function () {
         $('btn-cut').classList.toggle('on', on);
       },
       setPreset: function (name) { el.preset.value = name; },
+      // The live charts shown or not, and their box checked to say so.
+      setCharts: function (on) { $('charts-on').checked = on; $('charts').hidden = !on; },
+      // The help's words for the Auto scale's floor (readouts.js AUTO_FLOOR).
+      setAutoFloor: function (v) { $('auto-floor').textContent = String(v); },
       setSolver: function (name) { $('solver').value = name; },
       setPaused: function (paused) {
         el.pause.textContent = paused ? 'Resume' : 'Pause';

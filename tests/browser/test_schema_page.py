@@ -115,3 +115,29 @@ def test_the_compare_editor_offers_exactly_the_keys_a_panel_may_have(open_page):
         assert key in scene and scene[key] is None, (key, scene.get(key))
     pg.js('clothApp.advance(5)')
     assert pg.js('clothApp.info().frames') >= 5
+
+
+def test_the_menus_are_the_declared_solvers_and_presets(open_page):
+    """The Solver menu is cloth/scene.py SOLVERS with their SOLVER_LABELS, and the Preset menu
+    and the number keys are webgl/scenes.js PRESETS in order: neither is written in the HTML."""
+    from cloth.scene import SOLVER_LABELS, DEFAULT_SOLVER
+    pg = open_page()
+    got = pg.js('''(() => ({
+      solver: [...document.querySelectorAll('#solver option')].map((o) => [o.value, o.textContent]),
+      preset: [...document.querySelectorAll('#preset option')].map((o) => [o.value, o.textContent, o.disabled]),
+      presets: Object.keys(clothScenes.PRESETS).map((n) => [n, clothScenes.PRESETS[n].label]),
+    }))()''')
+    assert [v for v, _ in got['solver']] == SOLVERS
+    for (value, text), label in zip(got['solver'], SOLVER_LABELS):
+        assert text.startswith(label) and (('default' in text) == (value == DEFAULT_SOLVER)), text
+    assert [[n, label, False] for n, label in got['presets']] + [['custom', 'Custom (JSON)', True]] == \
+        got['preset']
+    # Each number key picks its preset; the menu shows it.
+    pg.js('clothApp.setPaused(true)')
+    for i, (name, _label) in enumerate(got['presets']):
+        pg.locator('body').press(str(i + 1))
+        assert pg.info()['preset'] == name and pg.input_value('#preset') == name
+    # A scene that says its solver shows it in the menu, by the declared name.
+    for name in SOLVERS:
+        pg.js('(n) => clothApp.loadScene({cols: 3, rows: 3, spacing: 0.1, pins: [0], solver: n})', name)
+        assert pg.input_value('#solver') == name
