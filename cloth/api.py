@@ -6,14 +6,14 @@ returns, and the parity tests compare its CPython and browser results number for
 
 from cloth.host import to_json, kind_of, is_finite, parse_json
 from cloth.scene import (parse_scene, fail, MAX_FRAMES, MATERIALS,
-                         DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large, KEYS, SOLVERS, SOLVER_LABELS,
+                         DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large, KEYS, SOLVERS, SOLVER_LABELS, SEED_SOLVER,
                          DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES,
                          unused_settings, SCENE_FIELDS)
-from cloth.sim import Cloth, count_edges, frame, measure, grab, move, move_by, release, pin, unpin, cut, \
+from cloth.sim import HAND_FORCE, obstacle_under, Cloth, count_edges, frame, measure, grab, move, move_by, release, pin, unpin, cut, \
     nearest
 from cloth.script import apply_settings, apply_due as due
 from cloth.session import open_session, step_panel, frames_ran, frames_left, at_replay_end, \
-    gesture_grab, gesture_move, gesture_release, gesture_toggle_pin, gesture_cut, change, \
+    gesture_grab, gesture_move, gesture_release, gesture_toggle_pin, gesture_cut, gesture_obstacle, change, \
     recording_text, recording_complete, recording_count, recording_full
 from cloth.solve import mark_overstretched
 
@@ -43,10 +43,11 @@ def schema():
     """The scene's keys as scene.KEYS declares them (each a Key: kind, range and its words,
     label, unit, live, panel, defaults, the page's field range), and the limits and names the
     page's other parts check against: [keys, solvers, default solver, action ops, most actions,
-    most panels, most vertices, the Scene section's fields, the solvers' labels]. The page derives its fields, the compare editor and the
+    most panels, most vertices, the Scene section's fields, the solvers' labels, the seed's solver,
+    a hand's most force in the cloth's weights]. The page derives its fields, the compare editor and the
     recorder from these, so that a key is declared once."""
     return [KEYS, SOLVERS, DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, SCENE_FIELDS,
-            SOLVER_LABELS]
+            SOLVER_LABELS, SEED_SOLVER, HAND_FORCE]
 
 
 def unused(cloth):
@@ -65,7 +66,8 @@ def session_functions():
     return [['open', open_session], ['stepPanel', step_panel], ['framesRan', frames_ran],
             ['framesLeft', frames_left], ['atReplayEnd', at_replay_end], ['grab', gesture_grab],
             ['move', gesture_move], ['release', gesture_release],
-            ['togglePin', gesture_toggle_pin], ['cut', gesture_cut], ['change', change],
+            ['togglePin', gesture_toggle_pin], ['cut', gesture_cut], ['obstacle', gesture_obstacle],
+            ['change', change],
             ['recordingText', recording_text], ['recordingComplete', recording_complete],
             ['recordingCount', recording_count], ['recordingFull', recording_full]]
 
@@ -77,7 +79,7 @@ def operations():
     arguments into fresh arrays on every call, which the hot loop must not do."""
     return [['frame', frame], ['measure', measure], ['grab', grab], ['move', move],
             ['move_by', move_by], ['release', release], ['pin', pin], ['unpin', unpin],
-            ['nearest', nearest], ['cut', cut]]
+            ['nearest', nearest], ['cut', cut], ['obstacle_under', obstacle_under]]
 
 
 def tear_check(cloth, most):
@@ -97,7 +99,7 @@ def scene_limit():
 def set_settings(cloth, keys_json_text):
     """New settings for the running cloth, as the JSON text of an object of scene keys (those
     of scene.SETTABLE: gravity, substeps, iterations, solver, damping, ...): what a `set`
-    action does, and what the page does when a person changes a setting. Positions,
+    action does (the page's session applies it to every panel: session.change). Positions,
     velocities, pins and held vertices stay (sim.retune); bad keys change nothing."""
     parsed = parse_json(keys_json_text)
     if parsed is None:
@@ -109,7 +111,7 @@ def check_frames(frames):
     if kind_of(frames) != 'number' or not is_finite(frames) or frames != frames // 1:
         fail('frames: must be a non-negative integer')
     if frames < 0 or frames > MAX_FRAMES:
-        fail('frames: must be a non-negative integer of at most 10000000')
+        fail('frames: must be a non-negative integer of at most ' + str(MAX_FRAMES))
 
 
 def positions_of(cloth):
@@ -163,7 +165,7 @@ def start(cloth, frames, with_trace):
     """The checks of a run, before any work: the frames, the trace's size."""
     check_frames(frames)
     if with_trace and frames * cloth.n_verts > MAX_TRACE_POINTS:
-        fail('frames: a trace of frames x vertices must be at most 20000000 points')
+        fail('frames: a trace of frames x vertices must be at most ' + str(MAX_TRACE_POINTS) + ' points')
 
 
 def result_of(cloth, frames):

@@ -77,14 +77,6 @@ def hanging_column_strains(rows, spacing, mass, compliance, g=9.81):
     return [(rows - 1 - r) * mass * g * compliance / spacing for r in range(rows - 1)]
 
 
-def hanging_column(rows, spacing, mass, compliance, g=9.81):
-    """[(0, y)] of the column's vertices from its pin at (0, 0): each link its stretched length."""
-    pts = [(0.0, 0.0)]
-    for strain in hanging_column_strains(rows, spacing, mass, compliance, g):
-        pts.append((0.0, pts[-1][1] - spacing * (1 + strain)))
-    return pts
-
-
 def elastic_chain(n_links, link, span, node_weight, compliance):
     """A chain of n equal links (rest length `link`, compliance a) whose n - 1 inner joints each
     carry `node_weight` (N), hung between (0, 0) and (span, 0). Returns (points, tensions):

@@ -26,9 +26,16 @@ SOLVERS = ['jakobsen', 'xpbd']
 DEFAULT_SOLVER = 'xpbd'
 # What the page's Solver menu and compare panels call SOLVERS[i].
 SOLVER_LABELS = ['Jakobsen (the seed\'s method)', 'XPBD + tethers, cells, lines']
-OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut']
+SEED_SOLVER = 'jakobsen'     # the seed's method, as it specifies it
+OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut', 'obstacle']
 MAX_TEAR = 1e6
 MAX_PANELS = 4
+# Obstacles: at most this many (each is a test per vertex per step), within OBSTACLE_FAR of
+# the origin and at most OBSTACLE_SIZE across (metres). Shapes by index: OBSTACLE_SHAPES[i].
+MAX_OBSTACLES = 16
+OBSTACLE_FAR = 1e6
+OBSTACLE_SIZE = 1e4
+OBSTACLE_SHAPES = ['circle', 'box']
 
 # The page's Scene section: its number fields, in order, each with the hint it shows beside
 # its range and, for a `point` key, the component the field is (0: x, 1: y). A key that is
@@ -139,6 +146,11 @@ KEYS = [
         'edge, per square metre of cloth and m/s of air)', 'Drag', 'N\u00b7s/m\u00b3', True, 1, 0.1,
         None, 0, 100, 0.01),
     Key('gust', 'gust', 0, 0, False, '', 'Gust', '', True, 0, [0.0, 1.0], None, 0, 0, 0),
+    # Rigid shapes the cloth's free vertices stay out of: {"circle": [x, y, r]} or
+    # {"box": [x0, y0, x1, y1]}, each with an optional friction (0 to 1). A person or the
+    # script moves one with the `obstacle` action; a `set` leaves them where they are.
+    Key('obstacles', 'obstacles', 0, 0, False, '', 'Obstacles', '', False, 0, None, None,
+        0, 0, 0),
 ]
 
 
@@ -161,13 +173,13 @@ def keys_where(what):
 
 
 SCENE_KEYS = [k.key for k in KEYS]
-ACTION_KEYS = ['frame', 'op', 'vertex', 'to', 'by', 'scene', 'from']
+ACTION_KEYS = ['frame', 'op', 'vertex', 'to', 'by', 'scene', 'from', 'index']
 # The keys a `set` action may change on the running cloth: everything but what makes the grid
 # (cols, rows, spacing, shear, pins) and what is not physics (actions, frames, name).
 SETTABLE = keys_where('live')
 # What the settings of a `set` are merged into: the scene's own keys but these, which a set
 # can neither change nor needs (actions would be parsed again at every set).
-NOT_SETTINGS = ['actions', 'pins', 'frames', 'name', 'compare']
+NOT_SETTINGS = ['actions', 'pins', 'frames', 'name', 'compare', 'obstacles']
 # `compare`: the page's compare mode, 2 to MAX_PANELS panels that run the scene side by side
 # under the same hands, each with some of these keys of its own. The physics ignores it but
 # for the panel a run asks for (parse_scene's `panel`).
@@ -254,6 +266,9 @@ class Scene:
         gust = spec('gust').fallback
         self.gust_amplitude = gust[0]     # the wind's relative swing
         self.gust_period = gust[1]        # s
+        # Each obstacle as [shape (OBSTACLE_SHAPES' index), centre x, centre y, half width,
+        # half height (a circle: its radius twice), friction].
+        self.obstacles = []
         self.dt = spec('dt').fallback
         self.damping = spec('damping').fallback
         self.max_speed = spec('max_speed').fallback
@@ -360,7 +375,7 @@ def unused_settings(scene):
     """What of a scene's settings its solver does not use, in words ('' for none): the seed's
     solver holds every edge at its rest length whatever the material, and with every vertex
     of the same mass under gravity alone, a density changes nothing either."""
-    if scene.solver == 'jakobsen' and (scene.compliance > 0.0 or scene.density > 0.0):
+    if scene.solver == SEED_SOLVER and (scene.compliance > 0.0 or scene.density > 0.0):
         return ('the seed\'s solver (Jakobsen) holds every edge at its rest length: a material '
                 'has no effect under it (the default solver honours it)')
     return ''
@@ -495,11 +510,13 @@ def scene_from_object(obj):
                  'of itself every period seconds (0.01 to 3600)')
         s.gust_amplitude = number(g[0], 'gust', 0.0, 10.0, False, 'an amplitude from 0 to 10')
         s.gust_period = number(g[1], 'gust', 0.01, 3600.0, False, 'a period from 0.01 to 3600 s')
+    if has_key(obj, 'obstacles'):
+        s.obstacles = parse_obstacles(obj['obstacles'])
     if has_key(obj, 'compare'):
         parse_compare(obj['compare'], obj)
     s.settings = copy_object(obj, NOT_SETTINGS, None)
     if has_key(obj, 'actions'):
-        s.actions = parse_actions(obj['actions'], n, s.settings)
+        s.actions = parse_actions(obj['actions'], n, s.settings, len(s.obstacles))
     return s
 
 
@@ -527,7 +544,55 @@ def known(names, key):
     return False
 
 
-def parse_actions(actions, n, settings):
+def parse_obstacles(items):
+    """The `obstacles` list -> [[shape, cx, cy, half width, half height, friction], ...]."""
+    if kind_of(items) != 'list':
+        fail('obstacles: must be a list of {"circle": [x, y, r]} or {"box": [x0, y0, x1, y1]} '
+             'objects')
+    if len(items) > MAX_OBSTACLES:
+        fail('obstacles: at most ' + str(MAX_OBSTACLES) + ' obstacles')
+    out = []
+    for i in range(len(items)):
+        o = items[i]
+        where = 'obstacles[' + str(i) + ']'
+        if kind_of(o) != 'object':
+            fail(where + ': must be an object: {"circle": [x, y, r]} or {"box": [x0, y0, x1, y1]}, '
+                 'and an optional "friction"')
+        for key in key_list(o):
+            if not known(['circle', 'box', 'friction'], key):
+                fail(where + '.' + shown(key) + ': unknown key (known: circle, box, friction)')
+        if has_key(o, 'circle') == has_key(o, 'box'):
+            fail(where + ': needs one shape: "circle": [x, y, r] or "box": [x0, y0, x1, y1]')
+        friction = 0.0
+        if has_key(o, 'friction'):
+            friction = number(o['friction'], where + '.friction', 0.0, 1.0, False, 'from 0 to 1')
+        far = 'within ' + str(int(OBSTACLE_FAR)) + ' m of the origin'
+        if has_key(o, 'circle'):
+            c = o['circle']
+            if kind_of(c) != 'list' or len(c) != 3:
+                fail(where + '.circle: must be a list of three numbers [x, y, r] in metres')
+            x = number(c[0], where + '.circle', -OBSTACLE_FAR, OBSTACLE_FAR, False, far)
+            y = number(c[1], where + '.circle', -OBSTACLE_FAR, OBSTACLE_FAR, False, far)
+            r = number(c[2], where + '.circle', 0.0, 0.5 * OBSTACLE_SIZE, True,
+                       'a radius in (0, ' + str(int(0.5 * OBSTACLE_SIZE)) + '] m')
+            out.append([0, x, y, r, r, friction])
+        else:
+            b = o['box']
+            if kind_of(b) != 'list' or len(b) != 4:
+                fail(where + '.box: must be a list of four numbers [x0, y0, x1, y1] in metres')
+            v = []
+            for j in range(4):
+                v.append(number(b[j], where + '.box', -OBSTACLE_FAR, OBSTACLE_FAR, False, far))
+            if not (v[2] > v[0] and v[3] > v[1]):
+                fail(where + '.box: must have x1 > x0 and y1 > y0 (its corners, lower left first)')
+            if v[2] - v[0] > OBSTACLE_SIZE or v[3] - v[1] > OBSTACLE_SIZE:
+                fail(where + '.box: at most ' + str(int(OBSTACLE_SIZE)) + ' m a side')
+            out.append([1, 0.5 * (v[0] + v[2]), 0.5 * (v[1] + v[3]), 0.5 * (v[2] - v[0]),
+                        0.5 * (v[3] - v[1]), friction])
+    return out
+
+
+def parse_actions(actions, n, settings, obstacles):
     if kind_of(actions) != 'list':
         fail('actions: must be a list of {"frame", "op", "vertex", "to"} objects')
     if len(actions) > MAX_ACTIONS:
@@ -581,6 +646,27 @@ def parse_actions(actions, n, settings):
             continue
         if has_key(a, 'from'):
             fail(where + '.from: only cut takes "from"')
+        if op == 'obstacle':
+            # {"frame": f, "op": "obstacle", "index": i, "to": [x, y]}: obstacle i's centre
+            # goes to (x, y) over the next frame, pushing the cloth before it.
+            for key in ['vertex', 'by']:
+                if has_key(a, key):
+                    fail(where + '.' + key + ': an obstacle move takes no ' + key)
+            for key in ['index', 'to']:
+                if not has_key(a, key):
+                    fail(where + '.' + key + ': missing (obstacle needs "index" and "to": [x, y])')
+            if obstacles == 0:
+                fail(where + '.index: the scene has no obstacles')
+            index = integer(a['index'], where + '.index', 0, obstacles - 1,
+                            'an obstacle index from 0 to ' + str(obstacles - 1))
+            to = point(a['to'], where + '.to')
+            if to[0] < -OBSTACLE_FAR or to[0] > OBSTACLE_FAR or to[1] < -OBSTACLE_FAR or \
+                    to[1] > OBSTACLE_FAR:
+                fail(where + '.to: must be within ' + str(int(OBSTACLE_FAR)) + ' m of the origin')
+            parsed.append(Action(frame, op, index, True, to[0], to[1], None))
+            continue
+        if has_key(a, 'index'):
+            fail(where + '.index: only obstacle takes "index"')
         if not has_key(a, 'vertex'):
             fail(where + '.vertex: missing')
         vertex = integer(a['vertex'], where + '.vertex', 0, n - 1,

@@ -2,7 +2,7 @@
 on a running cloth. The CLI's run, the page's panels and its session all go through these."""
 
 from cloth.scene import settings_scene
-from cloth.sim import grab, move, move_by, release, pin, unpin, retune, cut
+from cloth.sim import grab, move, move_by, release, pin, unpin, retune, cut, move_obstacle
 
 
 def apply_settings(cloth, keys, where):
@@ -11,6 +11,7 @@ def apply_settings(cloth, keys, where):
     scene.pins = cloth.scene.pins
     scene.actions = cloth.scene.actions
     scene.frames = cloth.scene.frames
+    scene.obstacles = cloth.scene.obstacles
     retune(cloth, scene)
 
 
@@ -37,6 +38,8 @@ def apply_action(cloth, action):
         apply_settings(cloth, action.keys, 'scene')
     elif op == 'cut':
         cut(cloth, action.from_x, action.from_y, action.to_x, action.to_y)
+    elif op == 'obstacle':
+        move_obstacle(cloth, action.vertex, action.to_x, action.to_y)
 
 
 def apply_due(cloth, next_action, f):

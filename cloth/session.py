@@ -3,7 +3,7 @@
 A session holds a scene's panels (one cloth, or one per panel of its `compare` list) and
 steps them under the same hands:
 - a person's gestures and setting changes are applied to every panel and then recorded, in
-  one function each (grab, move, release, toggle_pin, cut, change);
+  one function each (grab, move, release, toggle_pin, cut, obstacle, change);
 - the recording is a scene that replays bit for bit (the scene as loaded, its own actions,
   and every gesture and change as an action at the frame where it took effect);
 - a replayed recording runs up to its `frames`, and a person acting during it takes over: the
@@ -19,20 +19,30 @@ frame, which is where `run` applies an action of frame f that comes after them i
 
 from cloth.host import f64, i32, parse_json, has_key, copy_object, to_json
 from cloth.scene import parse_scene, MAX_ACTIONS, OPS, fail
-from cloth.sim import Cloth, grab, move, move_by, release, pin, unpin, cut, frame
+from cloth.sim import Cloth, grab, move, move_by, release, pin, unpin, cut, frame, move_obstacle
 from cloth.script import apply_due, drop_actions_after, apply_settings
+
+
+
+def code_of(op):
+    for i in range(len(OPS)):
+        if OPS[i] == op:
+            return i
+    fail('op: ' + op + ' is not an op')
+
 
 # The recording's ops: an action is kept as its code, its index in scene.OPS, or past them the
 # two forms compare mode records.
-GRAB = 0          # grab at (x, y)
-MOVE = 1          # move to (x, y)
-RELEASE = 2
-PIN = 3
-UNPIN = 4
-SET = 5           # the settings are sets[vertex]
-CUT = 6           # a blade from (from_x, from_y) to (x, y)
-GRAB_HERE = 7     # compare mode: every panel holds its own vertex where it is
-MOVE_BY = 8       # compare mode: every hand moves by (x, y) from where it took hold
+GRAB = code_of('grab')            # grab at (x, y)
+MOVE = code_of('move')            # move to (x, y)
+RELEASE = code_of('release')
+PIN = code_of('pin')
+UNPIN = code_of('unpin')
+SET = code_of('set')              # the settings are sets[vertex]
+CUT = code_of('cut')              # a blade from (from_x, from_y) to (x, y)
+OBSTACLE = code_of('obstacle')    # obstacle `vertex` (its index) sent to (x, y)
+GRAB_HERE = len(OPS)              # compare mode: every panel holds its own vertex where it is
+MOVE_BY = len(OPS) + 1            # compare mode: every hand moves by (x, y) from where it took hold
 FIRST_CAPACITY = 1024
 
 
@@ -154,6 +164,8 @@ def recorded(rec, i):
     if op == CUT:
         return {'frame': f, 'op': 'cut', 'from': [rec.from_x[i], rec.from_y[i]],
                 'to': [rec.x_of[i], rec.y_of[i]]}
+    if op == OBSTACLE:
+        return {'frame': f, 'op': 'obstacle', 'index': k, 'to': [rec.x_of[i], rec.y_of[i]]}
     if op == GRAB_HERE:
         return {'frame': f, 'op': 'grab', 'vertex': k}
     if op == MOVE_BY:
@@ -171,6 +183,8 @@ def scripted(a):
         return {'frame': a.frame, 'op': 'set', 'scene': a.keys}
     if a.op == 'cut':
         return {'frame': a.frame, 'op': 'cut', 'from': [a.from_x, a.from_y], 'to': [a.to_x, a.to_y]}
+    if a.op == 'obstacle':
+        return {'frame': a.frame, 'op': 'obstacle', 'index': a.vertex, 'to': [a.to_x, a.to_y]}
     if a.by:
         return {'frame': a.frame, 'op': a.op, 'vertex': a.vertex, 'by': [a.to_x, a.to_y]}
     if a.has_to:
@@ -419,6 +433,32 @@ def gesture_cut(s, x0, y0, x1, y1):
     if i >= 0:
         s.recording.from_x[i] = x0
         s.recording.from_y[i] = y0
+    return True
+
+
+def gesture_obstacle(s, j, x, y):
+    """A person drags obstacle j: its centre goes to (x, y), world metres, in every panel.
+    Moves of one obstacle with nothing between them in a frame are recorded as one, to where
+    the last went."""
+    p = s.panels[0]
+    if j < 0 or j >= p.n_obstacles:
+        return False
+    if x == p.obstacle_to[j + j] and y == p.obstacle_to[j + j + 1]:
+        return False
+    take_over(s)
+    for i in range(s.n_panels):
+        move_obstacle(s.panels[i], j, x, y)
+    rec = s.recording
+    last = rec.count - 1
+    if last >= 0 and rec.op_of[last] == OBSTACLE and rec.vertex_of[last] == j and \
+            rec.frame_of[last] == s.frame and rec.dropped_at < 0:
+        rec.x_of[last] = x
+        rec.y_of[last] = y
+    else:
+        # Recorded with no vertex (it ends no vertex's run of moves), then given its index.
+        i = record(rec, s.frame, OBSTACLE, -1, x, y)
+        if i >= 0:
+            rec.vertex_of[i] = j
     return True
 
 

@@ -15,10 +15,10 @@ The core knows nothing of the DOM or GL: the page reads `pos`, `diff` and `stres
 import math
 
 from cloth.host import f64, i32
-from cloth.scene import SceneError
+from cloth.scene import SceneError, OBSTACLE_FAR, SEED_SOLVER
 from cloth.solve import blow, integrate, sweep_jakobsen, sweep_xpbd, project_cells, \
     solve_lines, clear, max_motion2, copy_into, mark_crossed, \
-    mark_overstretched, drive_hands, limit_speed, follow_velocity, N_CONSTS, K_SPACING, K_TOLERANCE, K_ALPHA, \
+    mark_overstretched, drive_hands, limit_speed, follow_velocity, collide, N_CONSTS, K_SPACING, K_TOLERANCE, K_ALPHA, \
     K_STRETCH, K_KEEP, K_AX, K_AY, K_MAX_STEP, K_TEAR2, K_HAND_STEP, K_HAND_SHARE, K_HAND_PUSH, \
     K_WIND_X, K_WIND_Y, K_AIR
 from cloth.measure import deformation, nearest_vertex
@@ -217,6 +217,27 @@ class Cloth:
         # Sleep (scene key `sleep`): frames in a row that were still, and whether at rest.
         self.still_frames = 0
         self.asleep = False
+        # Obstacles (scene key `obstacles`): each one's shape, half width and height, friction,
+        # and centre: where it is (`at`), where it was when the step began (`was`), and where
+        # an `obstacle` action sends it by the end of the next frame (`to`).
+        obstacles = scene.obstacles
+        m = len(obstacles)
+        self.n_obstacles = m
+        self.obstacle_shape = i32(m)
+        self.obstacle_half = f64(2 * m)
+        self.obstacle_friction = f64(m)
+        self.obstacle_at = f64(2 * m)
+        self.obstacle_was = f64(2 * m)
+        self.obstacle_to = f64(2 * m)
+        for j in range(m):
+            o = obstacles[j]
+            self.obstacle_shape[j] = o[0]
+            self.obstacle_half[j + j] = o[3]
+            self.obstacle_half[j + j + 1] = o[4]
+            self.obstacle_friction[j] = o[5]
+            for c in [self.obstacle_at, self.obstacle_was, self.obstacle_to]:
+                c[j + j] = o[1]
+                c[j + j + 1] = o[2]
 
     def build_edges(self, shear):
         """Horizontal and vertical grid neighbours (rest = spacing), vertex by vertex; then,
@@ -427,6 +448,7 @@ def step(cloth):
         keep_cells(cloth)
         relax_edges(cloth)
     limit_let_go(cloth)
+    push_out(cloth)
 
 
 def update_reach(cloth):
@@ -631,6 +653,60 @@ def limit_let_go(cloth):
             cloth.let_go_limited += 1
 
 
+def push_out(cloth):
+    """No free vertex ends the step inside an obstacle, nor passed through one during it
+    (solve.collide: swept, in each obstacle's frame, so a fast cloth or a fast obstacle never
+    tunnels). Last in the step, so that nothing after it moves a vertex back in. An obstacle
+    an action moved goes there over the frame's steps, evenly (like a hand). A vertex a pin
+    or a hand fixes in space stays where it is fixed, even inside. Nothing in a scene without
+    obstacles."""
+    m = cloth.n_obstacles
+    if m == 0:
+        return
+    share = cloth.consts[K_HAND_SHARE]
+    at = cloth.obstacle_at
+    was = cloth.obstacle_was
+    to = cloth.obstacle_to
+    for i in range(m + m):
+        was[i] = at[i]
+        at[i] = to[i] if share == 1.0 else at[i] + (to[i] - at[i]) * share
+    collide(cloth.pos, cloth.prev, cloth.inv_mass, cloth.n_verts, m, cloth.obstacle_shape,
+            cloth.obstacle_half, was, at, cloth.obstacle_friction)
+
+
+def move_obstacle(cloth, j, x, y):
+    """Send obstacle j's centre to (x, y): it goes there over the next frame, pushing the
+    cloth before it."""
+    if j < 0 or j >= cloth.n_obstacles:
+        raise SceneError('index: no obstacle ' + str(j) + ' (the scene has ' +
+                         str(cloth.n_obstacles) + ')')
+    if not (x >= -OBSTACLE_FAR and x <= OBSTACLE_FAR and y >= -OBSTACLE_FAR and y <= OBSTACLE_FAR):
+        raise SceneError('to: must be finite and within ' + str(int(OBSTACLE_FAR)) + ' m of the origin')
+    if x == cloth.obstacle_to[j + j] and y == cloth.obstacle_to[j + j + 1]:
+        return
+    cloth.obstacle_to[j + j] = x
+    cloth.obstacle_to[j + j + 1] = y
+    cloth.converged = False
+    cloth.asleep = False
+    cloth.still_frames = 0
+
+
+def obstacle_under(cloth, x, y):
+    """The index of the obstacle whose shape, where it is going (`to`), holds (x, y); the last
+    one drawn (the highest index) first; -1 for none."""
+    for j in range(cloth.n_obstacles - 1, -1, -1):
+        dx = x - cloth.obstacle_to[j + j]
+        dy = y - cloth.obstacle_to[j + j + 1]
+        hx = cloth.obstacle_half[j + j]
+        hy = cloth.obstacle_half[j + j + 1]
+        if cloth.obstacle_shape[j] == 0:
+            if dx * dx + dy * dy <= hx * hx:
+                return j
+        elif dx >= -hx and dx <= hx and dy >= -hy and dy <= hy:
+            return j
+    return -1
+
+
 def lines(cloth):
     """Every column, then every row, solved as a chain (solve.solve_lines). Rows last: the
     top row of a cloth hung from its corners carries the whole cloth (measured at 60x60: 0.9%
@@ -679,7 +755,7 @@ def configure(cloth, scene):
     cloth.ay = scene.gravity_y * h2
     cloth.keep = 1.0 / (1.0 + scene.damping * cloth.h)
     cloth.max_step = scene.max_speed * cloth.h
-    cloth.use_xpbd = scene.solver == 'xpbd'
+    cloth.use_xpbd = scene.solver != SEED_SOLVER
     cloth.alpha = scene.compliance / h2
     cloth.tolerance = scene.tolerance
     # Tethers bound how far an inextensible cloth can reach from its pins; a compliant one

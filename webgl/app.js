@@ -19,7 +19,7 @@
 // that frame and stops there, paused. A person who takes over before the end (a gesture, a
 // setting) cuts the script at that frame and is recorded from there on (the session).
 //
-// Panels: a scene with a `compare` list runs once per entry, side by side (compare.js), each
+// Panels: a scene with a `compare` list runs once per entry, side by side (stage.js), each
 // panel its own cloth with the entry's settings written in, all under the same hands (the
 // session applies every gesture to each). A scene without one is a single panel.
 'use strict';
@@ -45,7 +45,7 @@
   // panels' own (never stepped): what the settings panel shows.
   const state = {
     panels: [], cloth: null, base: null, sceneText: '', sceneObj: null, view: null,
-    preset: 'curtain', params: null, compare: [],
+    preset: null, params: null, compare: [],
     mode: 'strain', scaleMode: 'auto', fullScale: 0.05, charts: true,
     paused: false, acc: 0, last: -1, renders: 0, dirty: true, needMeasure: true,
     renderMs: NaN, fps: NaN, lastReadout: 0, scale: 0,
@@ -66,6 +66,7 @@
   let sess = null;
   const share = window.clothShare;
   const blade = window.clothBlade.create(document.getElementById('blade'));
+  const obstacles = window.clothObstacles.create(document.getElementById('obstacles'));
   let bladeOn = false;      // the Cut tool (touch and pen cut with it; a mouse with Alt too)
 
   const ui = window.clothUI.create({
@@ -119,7 +120,7 @@
 
   // ---- scenes -------------------------------------------------------------
 
-  // The settings the panel shows, as a cloth has them now.
+  // The settings the panel shows, as a cloth has them now; the page's limits on a scene.
   const paramsOf = window.clothSettings.paramsOf, limitOf = params.limitOf;
 
   // Load scene JSON text. On a bad scene: show the message, keep the old scene
@@ -161,7 +162,6 @@
     // The scene's own actions of frame 0 came before any frame (the session applied them): a
     // pointer kept over a grid change lets go of a vertex the script took.
     gestures.held().forEach(function (h) { if (state.cloth.held[h.k] !== 0) gestures.forget(h.k); });
-    state.params = paramsOf(state.base);
     state.wanted = 0; state.played = 0; state.speed = 1;
     charts.reset(state.panels.length);
     compareUI.render(state.compare);
@@ -179,8 +179,7 @@
     state.needMeasure = false;
     state.dirty = true;
     ui.setPreset(preset);
-    ui.setSolver(state.params.solver);
-    ui.setParams(state.params);
+    showSettings();
     if (renderer.ok && !renderer.lost) render();
     const work = scenes.workOf(obj) * Math.max(1, state.compare.length);
     state.slowWork = work > scenes.REAL_TIME_WORK ? work : 0;
@@ -235,7 +234,7 @@
   // Restart the recording from frame 0 at real speed.
   function replay() {
     const text = recordingText();
-    load(text, state.preset === 'custom' ? 'custom' : state.preset, state.view);
+    load(text, state.preset, state.view);
     ui.note('Replaying ' + sess.replay_end + ' frames; a gesture takes over');
   }
 
@@ -404,6 +403,7 @@
       const p = state.panels[i];
       p.draw.draw(core.snapshot(p.cloth, p.snap), state.mode, state.scale);
     }
+    obstacles.draw(state.panels, state.rects, gestures.moving());
     const ms = performance.now() - t0;
     state.renderMs = Number.isFinite(state.renderMs) ? state.renderMs + EMA * (ms - state.renderMs) : ms;
     state.dirty = false;
@@ -438,7 +438,7 @@
                       complete: session.recordingComplete(sess), replayEnd: sess.replay_end });
   }
 
-  // Charts: a sample of each panel every clothCharts.SAMPLE_MS while the simulation runs, and
+  // Charts: a sample of each panel every SAMPLE_MS (charts.js) while the simulation runs, and
   // one for every frame stepped by hand.
   function panelRms(i) { return state.panels[i].cloth.rms_strain; }
   function panelMs(i) { return state.panels[i].simMs; }
@@ -506,6 +506,10 @@
     // Held by someone else: another pointer, or the scene's script (a replay's script lets go
     // when a person takes over, so its vertices can be grabbed then).
     isHeld: function (k) { return state.cloth.held[k] !== 0 && (sess.replay_end < 0 || gestures.holds(k)); },
+    obstacleAt: function (panel, x, y) {
+      return state.cloth ? state.panels[panel].run.ops.obstacle_under(x, y) : -1;
+    },
+    centreOf: function (j) { return [state.cloth.obstacle_to[2 * j], state.cloth.obstacle_to[2 * j + 1]]; },
     bladeOn: function () { return bladeOn; },
     trail: function (clientX, clientY, start) {
       const r = canvas.getBoundingClientRect();
@@ -526,6 +530,7 @@
       acted();
     },
     cut: function (x0, y0, x1, y1) { if (session.cut(sess, x0, y0, x1, y1)) acted(); },
+    obstacle: function (j, x, y) { if (session.obstacle(sess, j, x, y)) acted(); },
   });
   window.clothInput.attach(canvas, gestures);
 

@@ -58,5 +58,5 @@ window.clothBlade = (function () {
     return { add: add, draw: draw };
   }
 
-  return { create: create, TRAIL_MS: TRAIL_MS };
+  return { create: create };
 })();

@@ -142,5 +142,5 @@ window.clothCharts = (function () {
              count: function () { return count; }, written: function () { return written.slice(); } };
   }
 
-  return { create: create, COLORS: COLORS, WINDOW: WINDOW, SAMPLE_MS: SAMPLE_MS };
+  return { create: create, COLORS: COLORS };
 })();

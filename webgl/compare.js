@@ -11,7 +11,7 @@ window.clothCompare = (function () {
   const MAX_PANELS = SCHEMA.maxPanels;      // cloth/scene.py MAX_PANELS
   // The one-click pair: the seed's method against the default, each spelled out so that a
   // scene that set its own solver does not make them the same.
-  const SEED_VS_DEFAULT = ['jakobsen', SCHEMA.defaultSolver].map(function (name) {
+  const SEED_VS_DEFAULT = [SCHEMA.seedSolver, SCHEMA.defaultSolver].map(function (name) {
     const d = window.clothScenes.SOLVERS[name];
     return { solver: name, substeps: d.substeps, iterations: d.iterations };
   });
@@ -32,7 +32,7 @@ window.clothCompare = (function () {
     const own = ['', k.bySolver ? 'solver\'s' : 'scene\'s'];
     if (key === 'solver') {
       return [own].concat(SCHEMA.solvers.map(function (name) {
-        return [name, window.clothScenes.SOLVERS[name].label + (name === SCHEMA.defaultSolver ? ' (default)' : '')];
+        return [name, window.clothScenes.SOLVERS[name].label];
       }));
     }
     return [own, ['true', 'on'], ['false', 'off']];
@@ -41,7 +41,7 @@ window.clothCompare = (function () {
   function $(id) { return document.getElementById(id); }
 
   // h: {change(list, note) (a new compare list, [] leaves compare mode; note: what was
-  //     clamped), note(text)}
+  //     clamped), note(text), running(i, key) (what panel i runs for key, for its editor)}
   function create(h) {
     const labels = $('panel-labels');
     const list = $('compare-list');

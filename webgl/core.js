@@ -40,7 +40,7 @@ window.clothCore = (function (api) {
     return { keys: keys, order: order, solvers: given[1].slice(), defaultSolver: given[2], ops: given[3].slice(),
              maxActions: given[4], maxPanels: given[5], maxVertices: given[6],
              sceneFields: given[7].map(function (f) { return { key: f[0], hint: f[1], axis: f[2] }; }),
-             solverLabels: given[8].slice() };
+             solverLabels: given[8].slice(), seedSolver: given[9], handForce: given[10] };
   })();
 
   const core = {
@@ -64,8 +64,8 @@ window.clothCore = (function (api) {
     // max, minOpen, words, label, unit, live, panel, fallback, bySolver, field: {min, max,
     // step, int}}}, order: [names], solvers, defaultSolver, ops, maxActions, maxPanels,
     // maxVertices, sceneFields: [{key, hint, axis}] (the Scene section's number fields; axis:
-    // a point key's component), solverLabels (by solvers' index)}. Made once; callers must
-    // not change it.
+    // a point key's component), solverLabels (by solvers' index), seedSolver, handForce (a
+    // hand's most pull, in the cloth's weights)}. Made once; callers must not change it.
     schema: function () { return SCHEMA; },
     // edgesOf(cols, rows, shear) -> how many edges such a grid has (cloth/sim.py count_edges).
     edgesOf: function (cols, rows, shear) { return api.edges_of(cols, rows, shear); },
@@ -90,6 +90,12 @@ window.clothCore = (function (api) {
     out.vertex_value = cloth.stress;
     out.pinned = cloth.pinned;
     out.held = cloth.held;
+    // The obstacles, where they are going (an `obstacle` action's `to`: where the person put
+    // them), each a shape (0 circle, 1 box) and its half width and height.
+    out.n_obstacles = cloth.n_obstacles;
+    out.obstacle_shape = cloth.obstacle_shape;
+    out.obstacle_half = cloth.obstacle_half;
+    out.obstacle_at = cloth.obstacle_to;
     return out;
   };
   // parseScene(sceneJsonText[, panel]) -> the checked scene, nothing built (cloth/api.py

@@ -8,20 +8,26 @@
 // corners. A pointer works in the panel it pressed in (compare mode draws several): its vertex
 // stays under it there, and the app moves the same vertex to the same place in every panel.
 // Through a resize of the view the held vertex stays at the same place under the pointer.
+// A press inside an obstacle takes the obstacle instead: it keeps its offset from the pointer,
+// and the app sends it there (an `obstacle` action) in every panel.
 'use strict';
 
 window.clothGestures = (function () {
   // view: {locate(clientX, clientY) -> {panel, x, y} (the panel under the point, -1 for none,
   //        and world metres there), toWorld(panel, clientX, clientY) -> [x, y],
   //        pick(panel, x, y, radiusCss) -> k, positionOf(panel, k) -> [x, y], isHeld(k),
+  //        obstacleAt(panel, x, y) -> the obstacle there or -1, centreOf(j) -> [x, y],
   //        bladeOn() -> whether the Cut tool is on, trail(clientX, clientY, start) (where the
   //        blade went, to draw it)}
-  // act:  {grab(k, x, y), move(k, x, y), release(k), togglePin(k), cut(x0, y0, x1, y1)}
+  // act:  {grab(k, x, y), move(k, x, y), release(k), togglePin(k), cut(x0, y0, x1, y1),
+  //        obstacle(j, x, y) (its centre to (x, y))}
   function create(view, act) {
     // pointerId -> {panel, k, cx, cy (latest, client px), ox, oy (vertex - pointer, m), fresh}
     const hands = new Map();
     // pointerId -> {panel, x, y (the blade's last point, world metres)}
     const blades = new Map();
+    // pointerId -> {panel, j, ox, oy (centre - pointer, m)}: pointers that move an obstacle
+    const movers = new Map();
 
     function pickAt(clientX, clientY, radiusCss) {
       const at = view.locate(clientX, clientY);
@@ -39,6 +45,16 @@ window.clothGestures = (function () {
       // ---- what input.js reports --------------------------------------------------------
       // A press: takes the vertex near it unless someone else holds it. Whether it took one.
       press: function (id, clientX, clientY, radiusCss) {
+        const at = view.locate(clientX, clientY);
+        const j = at.panel < 0 ? -1 : view.obstacleAt(at.panel, at.x, at.y);
+        if (j >= 0) {
+          let taken = false;
+          movers.forEach(function (m) { if (m.j === j) taken = true; });
+          if (taken) return false;
+          const c = view.centreOf(j);
+          movers.set(id, { panel: at.panel, j: j, ox: c[0] - at.x, oy: c[1] - at.y });
+          return true;
+        }
         const hit = pickAt(clientX, clientY, radiusCss);
         if (hit.k < 0 || view.isHeld(hit.k)) return false;
         const v = view.positionOf(hit.panel, hit.k);
@@ -49,6 +65,12 @@ window.clothGestures = (function () {
       },
       // Whether the pointer still holds a vertex (a new scene or the script may have taken it).
       drag: function (id, clientX, clientY) {
+        const m = movers.get(id);
+        if (m) {
+          const w = view.toWorld(m.panel, clientX, clientY);
+          act.obstacle(m.j, w[0] + m.ox, w[1] + m.oy);
+          return true;
+        }
         const h = hands.get(id);
         if (!h) return false;
         follow(h, clientX, clientY);
@@ -57,6 +79,12 @@ window.clothGestures = (function () {
       // The pointer lets go, landing exactly where it was lifted when `landed` (a cancelled
       // pointer lets go where it last was). The vertex it let go, or -1.
       lift: function (id, clientX, clientY, landed) {
+        const m = movers.get(id);
+        if (m) {
+          if (landed) { const w = view.toWorld(m.panel, clientX, clientY); act.obstacle(m.j, w[0] + m.ox, w[1] + m.oy); }
+          movers.delete(id);
+          return -1;
+        }
         const h = hands.get(id);
         if (!h) return -1;
         hands.delete(id);
@@ -69,7 +97,11 @@ window.clothGestures = (function () {
         if (hit.k >= 0) act.togglePin(hit.k);
       },
       togglePin: function (k) { act.togglePin(k); },
-      canGrab: function (clientX, clientY, radiusCss) { return pickAt(clientX, clientY, radiusCss).k >= 0; },
+      canGrab: function (clientX, clientY, radiusCss) {
+        const at = view.locate(clientX, clientY);
+        if (at.panel >= 0 && view.obstacleAt(at.panel, at.x, at.y) >= 0) return true;
+        return pickAt(clientX, clientY, radiusCss).k >= 0;
+      },
       bladeOn: function () { return view.bladeOn(); },
       // A blade stroke starts on a panel; whether it did.
       bladeStart: function (id, clientX, clientY) {
@@ -99,6 +131,7 @@ window.clothGestures = (function () {
           if (h && kept.k >= 0) { h.k = kept.k; h.fresh = true; next.set(kept.id, h); }
         });
         hands.clear();
+        movers.clear();
         next.forEach(function (h, id) { hands.set(id, h); });
       },
       // The kept hands hold their vertex of the new cloth where it is, with their offset to
@@ -119,6 +152,12 @@ window.clothGestures = (function () {
         return out;
       },
       count: function () { return hands.size; },
+      // The obstacle a pointer moves, or -1 (the overlay draws it lit).
+      moving: function () {
+        let j = -1;
+        movers.forEach(function (m) { j = m.j; });
+        return j;
+      },
       // The view changed (a resize): put each held vertex back under its pointer.
       reproject: function () { hands.forEach(function (h) { follow(h, h.cx, h.cy); }); },
       // Does a pointer hold vertex k?

@@ -17,7 +17,7 @@ window.clothOptions = (function () {
   // MAX_NOTES notes, then how many more.
   function parse(search, presets) {
     const q = new URLSearchParams(search);
-    const out = { preset: 'curtain', paused: false, webgl: 'auto', notes: [] };
+    const out = { preset: Object.keys(presets)[0], paused: false, webgl: 'auto', notes: [] };   // the first preset
     const notes = [];
     const seen = {};
     function unknown(key, value, allowed) {

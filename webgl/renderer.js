@@ -270,6 +270,9 @@ window.clothRenderer = (function () {
       // CSS pixels relative to the canvas's top-left corner.
       p.toCanvas = function (x, y) { return [ox + s * x, oy - s * y]; };
       p.toWorld = function (cx, cy) { return [(cx - ox) / s, (oy - cy) / s]; };
+      // The same, one coordinate at a time (no array: a per-frame overlay's drawing).
+      p.canvasX = function (x) { return ox + s * x; };
+      p.canvasY = function (y) { return oy - s * y; };
 
       // Half the edge width in device pixels. At least one device pixel on ordinary
       // grids, so every edge has a fully covered core pixel; on dense grids edges thin

@@ -203,6 +203,34 @@ window.clothScenes = (function () {
       size: 2.0,
       pins: function (cols) { return topRow(cols, 1); },
     },
+    // A towel over a peg, seen from its side: a strip dropped on a round peg (an obstacle with
+    // friction) drapes over it in two hanging halves. Drag the peg (or the towel) about.
+    peg: {
+      label: 'Towel on a peg',
+      params: { cols: 60, rows: 3 },
+      size: 2.0,
+      pins: function () { return []; },
+      keys: function (cols, rows, spacing) {
+        const w = (cols - 1) * spacing;
+        return { obstacles: [{ circle: [0.5 * w, -0.35 * w, 0.04 * w], friction: 0.6 }] };
+      },
+      view: function (w) { return { x0: 0.2 * w, x1: 0.8 * w, y0: -0.95 * w, y1: 0.05 * w }; },
+    },
+    // A flag on its pole (the left column pinned) in a gusty wind from the left.
+    flag: {
+      label: 'Flag in the wind',
+      params: { cols: 45, rows: 30, wind: 10 },
+      size: 1.8,
+      pins: function (cols, rows) {
+        const pins = [];
+        for (let r = 0; r < rows; r++) pins.push(r * cols);
+        return pins;
+      },
+      // Shear edges: a flag holds its shape (without them, each row hangs from its own pin and
+      // the cloth shears flat along the pole).
+      keys: function () { return { shear: true, drag: 0.4, gust: [0.5, 1.7] }; },
+      view: function (w, h) { return { x0: -0.15 * w, x1: 1.15 * w, y0: -h - 0.6 * w, y1: 0.1 * w }; },
+    },
   };
 
   function spacingFor(preset, cols, rows) {
@@ -219,6 +247,7 @@ window.clothScenes = (function () {
     const scene = writeParams({ cols: p.cols, rows: p.rows, spacing: spacing, pins: preset.pins(p.cols, p.rows),
                                 dt: SCHEMA.keys.dt.fallback }, p);
     if (preset.actions) scene.actions = preset.actions(p.cols, p.rows, spacing);
+    if (preset.keys) Object.assign(scene, preset.keys(p.cols, p.rows, spacing));
     const w = (p.cols - 1) * spacing, h = (p.rows - 1) * spacing;
     const view = preset.view ? preset.view(w, h) : viewFor(scene, preset.sag);
     return { scene: scene, view: view };
@@ -232,7 +261,20 @@ window.clothScenes = (function () {
     const big = Math.max(w, h, s);
     const margin = 0.08 * big;
     const below = (sag === undefined ? 0.2 : sag) * big;
-    return { x0: -margin, x1: w + margin, y0: -h - below - margin, y1: margin };
+    const v = { x0: -margin, x1: w + margin, y0: -h - below - margin, y1: margin };
+    // Obstacles near the cloth are in view too (up to a cloth's size around it: a floor
+    // 10 km wide would shrink the cloth to a dot).
+    const near = { x0: v.x0 - big, x1: v.x1 + big, y0: v.y0 - big, y1: v.y1 + big };
+    (Array.isArray(scene.obstacles) ? scene.obstacles : []).forEach(function (o) {
+      const c = o && Array.isArray(o.circle) ? o.circle : null, b = o && Array.isArray(o.box) ? o.box : null;
+      const e = c ? [c[0] - c[2], c[1] - c[2], c[0] + c[2], c[1] + c[2]] : b;
+      if (!e || !e.every(Number.isFinite)) return;
+      v.x0 = Math.min(v.x0, Math.max(e[0] - margin, near.x0));
+      v.y0 = Math.min(v.y0, Math.max(e[1] - margin, near.y0));
+      v.x1 = Math.max(v.x1, Math.min(e[2] + margin, near.x1));
+      v.y1 = Math.max(v.y1, Math.min(e[3] + margin, near.y1));
+    });
+    return v;
   }
 
   // What the page runs at most, for every scene it loads (panel, preset, JSON box, link):

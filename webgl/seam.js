@@ -38,6 +38,21 @@ window.clothSeam = (function () {
     window.clothApp = {
       // The first panel's (the only one outside compare mode).
       state: function () { return stateOf(0); },
+      // A world point of panel i (default 0) in client px (where a pointer would press it).
+      clientOf: function (x, y, i) {
+        const p = app.state().panels[i || 0], r = canvas.getBoundingClientRect(), q = p.draw.toCanvas(x, y);
+        return [r.left + q[0], r.top + q[1]];
+      },
+      // Panel i's obstacles: [{at: [x, y] (where the physics has it), to: [x, y] (where it is
+      // going), half: [hx, hy], shape}] .
+      obstacles: function (i) {
+        const c = app.state().panels[i || 0].cloth, out = [];
+        for (let j = 0; j < c.n_obstacles; j++) {
+          out.push({ at: [c.obstacle_at[2 * j], c.obstacle_at[2 * j + 1]], to: [c.obstacle_to[2 * j], c.obstacle_to[2 * j + 1]],
+                     half: [c.obstacle_half[2 * j], c.obstacle_half[2 * j + 1]], shape: c.obstacle_shape[j] });
+        }
+        return out;
+      },
       setPaused: app.setPaused,
       advance: app.advance,
       // The recording since the last load or reset, as scene JSON text with `frames`.

@@ -55,7 +55,7 @@ window.clothSettings = (function () {
       retune(Object.assign({}, state.params, { material: name }), '');
     }
 
-    // New settings for the running cloth (the core's set: cloth/api.py set_settings, what a
+    // New settings for the running cloth (the session's change: cloth/session.py, what a
     // recorded `set` action replays), in every panel: keys a panel has of its own are set too,
     // as the recording's `set` sets them; a rejected one leaves everything as it was.
     function retune(p, note) {

@@ -262,6 +262,6 @@ window.clothShare = (function () {
     });
   }
 
-  return { fileName: fileName, exportText: exportText, copyLink: copyLink, MAX_LINK: MAX_LINK, MAX_BYTES: MAX_BYTES, linkFor: linkFor, sceneIn: sceneIn, decode: decode, fromText: fromText,
-           readFile: readFile, download: download, copy: copy, copyLater: copyLater, badByte: badByte };
+  return { fileName: fileName, exportText: exportText, copyLink: copyLink, linkFor: linkFor, sceneIn: sceneIn,
+           fromText: fromText, readFile: readFile };
 })();

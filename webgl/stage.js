@@ -111,5 +111,5 @@ window.clothStage = (function () {
     try { ro.observe(canvas, { box: 'device-pixel-content-box' }); } catch (e) { ro.observe(canvas); }
   }
 
-  return { layout: layout, panelAt: panelAt, locate: locate, toWorld: toWorld, heldPoints: heldPoints, watch: watch };
+  return { layout: layout, locate: locate, toWorld: toWorld, heldPoints: heldPoints, watch: watch };
 })();

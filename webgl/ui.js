@@ -50,8 +50,8 @@ window.clothUI = (function () {
     return v.toFixed(digits);
   }
 
-  // h: {pause, step, reset, preset(name), solver(name), param(key, raw), mode(m), scaleMode(m),
-  //     fullScale(raw), loadJson(text), currentJson() -> text, replay, exportFile, copyLink,
+  // h: {pause, step, reset, preset(name), solver(name), material(name), param(key, raw), mode(m),
+  //     scaleMode(m), fullScale(raw), loadJson(text), currentJson() -> text, replay, exportFile, copyLink,
   //     openFile(file), charts(on), cutTool(on)}
   function create(h) {
     const el = {
@@ -83,6 +83,7 @@ window.clothUI = (function () {
     let errorAbout = '';   // what the shown error is about (error, clearError)
     let legendName = 'edge |diff|';
     let helpReturn = null;
+    let helpOpen = false;   // the help is shown (modal)
     // A button clicked with a pointer gives focus back to the page, so that Space and the
     // other shortcuts work at once (a focused button would take Space and click itself
     // again: Reset twice). Keyboard clicks (detail 0) keep focus where the person put it.
@@ -114,11 +115,19 @@ window.clothUI = (function () {
     const SCHEMA = window.clothCore.schema(), SOLVERS = window.clothScenes.SOLVERS;
     SCHEMA.solvers.forEach(function (name) {
       const d = SOLVERS[name], chosen = name === SCHEMA.defaultSolver;
-      option($('solver'), name, d.label + (chosen ? ', the default' : ''),
-             d.substeps + ' step' + (d.substeps === 1 ? '' : 's') + ' a frame, ' + d.iterations +
-             ' iteration' + (d.iterations === 1 ? '' : 's') + ' each (see the README)');
+      option($('solver'), name, d.label,
+             (chosen ? 'The default: ' : '') + d.substeps + ' step' + (d.substeps === 1 ? '' : 's') + ' a frame, ' +
+             d.iterations + ' iteration' + (d.iterations === 1 ? '' : 's') + ' each (see the README)');
     });
     el.preset.addEventListener('change', function () { h.preset(el.preset.value); });
+    // The help's numbers and names, from where they are declared.
+    const names = Object.keys(PRESETS).map(function (n) { return PRESETS[n].label.toLowerCase(); });
+    const facts = {
+      defaultSubsteps: SOLVERS[SCHEMA.defaultSolver].substeps, seedIterations: SOLVERS[SCHEMA.seedSolver].iterations,
+      presetFabric: window.clothScenes.MATERIALS[window.clothCore.materials().preset].label.toLowerCase(),
+      handForce: SCHEMA.handForce, presetCount: names.length, presetNames: names.join(', '), maxPanels: SCHEMA.maxPanels,
+    };
+    document.querySelectorAll('[data-fact]').forEach(function (node) { node.textContent = String(facts[node.dataset.fact]); });
     $('solver').addEventListener('change', function () { h.solver($('solver').value); });
     // The Material menu and its help rows, from the core's list of fabrics.
     const fabrics = window.clothScenes.MATERIALS;
@@ -199,7 +208,7 @@ window.clothUI = (function () {
     // arrow keys. While the help is open it is modal: it takes the keys, Esc or H closes it.
     window.addEventListener('keydown', function (e) {
       const k = e.key;
-      if (!el.helpBox.hidden) {
+      if (helpOpen) {
         if (k === 'Escape' || k === 'h' || k === 'H' || k === '?') { ui.showHelp(false); e.preventDefault(); }
         else if (k === 'Tab') trapFocus(e);
         else if (k !== 'Enter' && !(k === ' ' && e.target === el.helpClose)) e.preventDefault();
@@ -311,7 +320,8 @@ window.clothUI = (function () {
       fatal: function (msg) { el.fatal.textContent = msg; el.fatal.hidden = !msg; },
       // The help is modal: focus goes into it, and back where it was when it closes.
       showHelp: function (show) {
-        if (show === !el.helpBox.hidden) return;
+        if (show === helpOpen) return;
+        helpOpen = show;
         if (show) helpReturn = document.activeElement;
         if (show) {
           el.helpBox.hidden = false;

@@ -140,6 +140,24 @@ SCENES = {
         {'frame': 5, 'op': 'set', 'scene': {'wind': [8, 0], 'drag': 1.0}},
         {'frame': 25, 'op': 'set', 'scene': {'gust': [1.5, 0.5], 'solver': 'xpbd'}},
         {'frame': 45, 'op': 'set', 'scene': {'wind': [0, 0]}}]), 70),
+    # Obstacles (issue #24): a cloth dropped on a peg and a box with friction; a box swept 1 m
+    # through a hanging curtain in one frame and back; the seed's method over a circle in wind,
+    # with a cut and a hand.
+    'obstacles-drop': (grid(8, 8, pins=[], damping=1, obstacles=[
+        {'circle': [0.7, -2.0, 0.3], 'friction': 0.4}, {'box': [-0.2, -2.6, 0.4, -2.3]}]), 120),
+    'obstacles-swept-box': (grid(8, 6, pins=list(range(8)), shear=True, obstacles=[
+        {'box': [-0.8, -0.9, -0.5, -0.3], 'friction': 1.0}], actions=[
+        {'frame': 20, 'op': 'obstacle', 'index': 0, 'to': [0.35, -0.6]},
+        {'frame': 21, 'op': 'obstacle', 'index': 0, 'to': [1.95, -0.6]},
+        {'frame': 50, 'op': 'obstacle', 'index': 0, 'to': [-0.65, -0.6]}]), 80),
+    'obstacles-seed-wind-cut': (grid(9, 7, pins=[0, 8], solver='jakobsen', wind=[4, 1], drag=0.5,
+                                     tear=0.4, obstacles=[{'circle': [0.8, -1.0, 0.25], 'friction': 0.2}],
+                                     actions=[
+        {'frame': 10, 'op': 'grab', 'vertex': 58},
+        {'frame': 12, 'op': 'move', 'vertex': 58, 'to': [0.8, -0.6]},
+        {'frame': 20, 'op': 'cut', 'from': [0.1, -0.5], 'to': [0.5, -0.55]},
+        {'frame': 30, 'op': 'release', 'vertex': 58},
+        {'frame': 35, 'op': 'set', 'scene': {'solver': 'xpbd'}}]), 70),
     'recording-frames-key': (grid(6, 5, pins=[0, 5], frames=33, actions=[
         {'frame': 33, 'op': 'grab', 'vertex': 20, 'to': [0.1, 0.2]}]), None),
     # Tearing past a limit while pulled far beyond reach, and blades through the cloth (a piece
@@ -236,10 +254,28 @@ def scenes(draw):
                           ('gust', st.tuples(st.floats(0, 3), st.floats(0.01, 2)).map(list))]:
         if draw(st.booleans()):
             s[key] = draw(strategy)
+    size = st.floats(0.01, 2, allow_nan=False, width=64)
+    obstacles = []
+    for _ in range(draw(st.integers(0, 3))):
+        if draw(st.booleans()):
+            o = {'circle': [draw(coord), draw(coord), draw(size)]}
+        else:
+            x0, y0 = draw(coord), draw(coord)
+            o = {'box': [x0, y0, x0 + draw(size), y0 + draw(size)]}
+        if draw(st.booleans()):
+            o['friction'] = draw(st.floats(0, 1))
+        obstacles.append(o)
+    if obstacles:
+        s['obstacles'] = obstacles
     actions, held = [], set()
     for _ in range(draw(st.integers(0, 8))):
         frame = draw(st.integers(0, 12))
-        op = draw(st.sampled_from(['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut']))
+        op = draw(st.sampled_from(['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut', 'obstacle']))
+        if op == 'obstacle':
+            if obstacles:
+                actions.append({'frame': frame, 'op': 'obstacle', 'index': draw(st.integers(0, len(obstacles) - 1)),
+                                'to': [draw(coord), draw(coord)]})
+            continue
         if op == 'cut':
             actions.append({'frame': frame, 'op': 'cut', 'from': [draw(coord), draw(coord)],
                             'to': [draw(coord), draw(coord)]})

@@ -153,7 +153,7 @@ def test_no_webgl_shows_a_clear_message(open_page):
     assert json.loads(pg.js('clothCore.run(\'{"cols":2,"rows":2,"spacing":1}\', 3)'))['frames'] == 3
 
 
-@pytest.mark.parametrize('preset', ['curtain', 'corners', 'chain', 'large'])
+@pytest.mark.parametrize('preset', ['curtain', 'corners', 'chain', 'large', 'tearable', 'peg', 'flag'])
 def test_presets_load_run_and_fit_the_view(open_page, preset):
     pg = open_page('?paused=1&preset=' + preset)
     pg.js('clothApp.advance(30)')

@@ -123,13 +123,13 @@ def test_the_menus_are_the_declared_solvers_and_presets(open_page):
     from cloth.scene import SOLVER_LABELS, DEFAULT_SOLVER
     pg = open_page()
     got = pg.js('''(() => ({
-      solver: [...document.querySelectorAll('#solver option')].map((o) => [o.value, o.textContent]),
+      solver: [...document.querySelectorAll('#solver option')].map((o) => [o.value, o.textContent, o.title]),
       preset: [...document.querySelectorAll('#preset option')].map((o) => [o.value, o.textContent, o.disabled]),
       presets: Object.keys(clothScenes.PRESETS).map((n) => [n, clothScenes.PRESETS[n].label]),
     }))()''')
-    assert [v for v, _ in got['solver']] == SOLVERS
-    for (value, text), label in zip(got['solver'], SOLVER_LABELS):
-        assert text.startswith(label) and (('default' in text) == (value == DEFAULT_SOLVER)), text
+    assert [v for v, _, _ in got['solver']] == SOLVERS
+    for (value, text, title), label in zip(got['solver'], SOLVER_LABELS):
+        assert text == label and (title.startswith('The default') == (value == DEFAULT_SOLVER)), title
     assert [[n, label, False] for n, label in got['presets']] + [['custom', 'Custom (JSON)', True]] == \
         got['preset']
     # Each number key picks its preset; the menu shows it.

@@ -23,6 +23,7 @@ from browser_helpers import DIST, ROOT, free_vertex
 import test_page
 import test_recording_page as rec
 import test_render
+import test_obstacles_page as obstacles_page
 from test_parity import SCENES, grid
 
 sys.path.insert(0, str(ROOT))
@@ -606,3 +607,8 @@ def test_the_blade_cuts(open_page):
     assert json.loads(api.run(text))['positions'] == pg.state()['positions']
     pg.key('r')
     assert pg.info()['broken'] == 0
+
+
+
+def test_an_obstacle_is_drawn_dragged_through_the_cloth_and_replays(open_page):
+    obstacles_page.test_an_obstacle_is_drawn_dragged_through_the_cloth_and_replays(open_page)
