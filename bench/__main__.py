@@ -7,15 +7,27 @@ import platform
 import sys
 import time
 
-from bench.page import ROOT, Progress, BenchError
-from bench.speed import MODES, DAMPING, WIDTH, SEED, bench, check_targets
-from bench.report import markdown, svg_plot, json_safe, PLOT_FLOOR
+from bench.page import ROOT, Progress, BenchError, open_page
+from bench.speed import MODES, DAMPING, WIDTH, SEED, WORLD_SIZE, bench, check_targets, world_cost
+from bench.report import markdown, svg_plot, json_safe, world_line, PLOT_FLOOR
 from bench.gestures import gestures
 
 # The files a run writes: bench<suffix><ending>. A quick run's files are a smoke test, not
 # results: .gitignore keeps them out of commits (tests/test_bench.py checks that it does).
 OUTPUTS = ['.md', '.json', '.svg', '-strain.svg']
 QUICK_SUFFIX = '-quick'
+
+
+def world_only(progress):
+    """`--world`: the world's cost table alone, as markdown."""
+    from playwright.sync_api import sync_playwright
+    with sync_playwright() as p:
+        browser, page = open_page(p, progress)
+        try:
+            wc = world_cost(page, WORLD_SIZE, MODES['full']['sol_reps'], progress)
+        finally:
+            browser.close()
+    return '# Wind and obstacles\n\n`python -m bench --world`\n\n' + world_line(wc) + '\n'
 
 
 def main(argv=None):
@@ -32,12 +44,26 @@ def main(argv=None):
     ap.add_argument('--physics', action='store_true',
                     help='only the release table and the strain fields at rest, on the page\'s '
                          'presets (OUT/physics.md, .json, .svg; with --quick: 10x10 and 30x30)')
+    ap.add_argument('--world', action='store_true',
+                    help='only the cost of wind and obstacles against the same cloth without '
+                         'them (the default, 120x120; OUT/world.md)')
     ap.add_argument('--figures', action='store_true',
                     help='only the README\'s other figures: sleep, the pendulum, the seed\'s '
                          'stretch, one sweep per step, the carried corner, tethers, drawing '
                          '(OUT/figures.md, .json; with --quick: the small sizes)')
     args = ap.parse_args(argv)
     progress = Progress()
+    if args.world:
+        try:
+            md = world_only(progress)
+        except BenchError as err:
+            sys.stderr.write('error: %s\n' % err)
+            return 1
+        os.makedirs(args.out, exist_ok=True)
+        with open(os.path.join(args.out, 'world.md'), 'w', encoding='utf-8') as f:
+            f.write(md)
+        sys.stdout.write(md)
+        return 0
     if args.physics or args.figures:
         from bench import physics as bench_physics, figures as bench_figures
         module, name = (bench_physics, 'physics') if args.physics else (bench_figures, 'figures')
@@ -70,7 +96,7 @@ def main(argv=None):
         sys.stdout.write(md)
         return 0
     try:
-        rows, groups, sol, panels, tear, chromium = bench(args.quick, progress)
+        rows, groups, sol, panels, tear, world, chromium = bench(args.quick, progress)
     except BenchError as err:
         sys.stderr.write('error: %s\n' % err)
         return 1
@@ -84,6 +110,7 @@ def main(argv=None):
             'damping': DAMPING, 'width': WIDTH, 'seed_row': SEED,
             'seconds': progress.elapsed()}
     result = {'meta': meta, 'speed_of_light': sol, 'compare_mode': panels, 'tear_check': tear,
+              'world_cost': world,
               'groups': groups, 'rows': rows}
     result['targets'] = check_targets(rows, args.quick)
     md = markdown(result)

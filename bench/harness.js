@@ -131,6 +131,11 @@
     return ms;
   };
 
+  // The world's cost (issue #24): runs of scenes that differ only by their air and obstacles,
+  // each stepped by itself; worldRound(i, frames) -> ms of run i over `frames` frames.
+  B.worldSetup = function (texts) { B.world = texts.map(function (t) { return M.run(clothCore.load(t)); }); };
+  B.worldRound = function (i, frames) { M.step(B.world[i], frames, 0); return B.world[i].ms; };
+
   // Tearing's check on its own (issue #15): the check a frame makes (cloth/solve.py
   // mark_overstretched over every edge, at a limit nothing reaches, so nothing breaks and the
   // state is the same each call) against whole frames of the same cloth, timed one after the

@@ -7,6 +7,16 @@ from bench.speed import SEED, SCENES, WIDTH, DAMPING
 
 # ---- reports ---------------------------------------------------------------------------------
 
+def world_line(wc):
+    """The world's cost in one sentence (issue #24: four obstacles and wind at most 15% more)."""
+    return ('Wind and obstacles (issue #24: four obstacles and wind at most %d%% more at %dx%d): '
+            'the default on the dragged curtain %dx%d, each run timed by itself in rotated order '
+            '(median of %d rounds): %s; target %s.' % (
+                round(100 * (wc['target'] - 1)), wc['size'], wc['size'], wc['size'], wc['size'], wc['reps'],
+                '; '.join('%s %s ms/frame (%s)' % (r['scene'], fmt(r['ms_per_frame']), fmt_ratio(r['vs_without']))
+                          for r in wc['rows']), 'met' if wc['met'] else 'NOT met'))
+
+
 def markdown(result):
     meta = result['meta']
     sol = result['speed_of_light']
@@ -65,6 +75,10 @@ def markdown(result):
                              '%s %dx%d %.2f%% (%s of %s ms)' % (
                                  t['scene'], t['size'], t['size'], 100.0 * t['fraction'],
                                  fmt(t['check_ms']), fmt(t['frame_ms'])) for t in tc)))
+        lines.append('')
+    wc = result.get('world_cost')
+    if wc:
+        lines.append(world_line(wc))
         lines.append('')
     cm = result.get('compare_mode')
     if cm:

@@ -281,6 +281,48 @@ def compare_cost(page, n, reps, progress):
     return {'scene': 'curtain', 'size': n, 'frames_per_batch': frames, 'reps': reps, 'rows': rows}
 
 
+WORLD_SIZE = 120
+WORLD_TARGET = 1.15          # issue #24: four obstacles and wind cost at most 15% more
+
+
+def world_scenes(n, frames):
+    """The dragged curtain (its hand on a figure-eight: nothing settles), as is, in wind, and
+    in wind among four obstacles (two pegs below it, two boxes beside it, which the swinging
+    cloth runs into): [(label, scene)]."""
+    s = base_scene('dynamic', n)
+    s['actions'] = scene_actions('dynamic', n, frames)
+    w = WIDTH
+    air = {'wind': [3.0, 0.0], 'drag': 0.1}
+    world = dict(air, obstacles=[{'circle': [0.2 * w, -1.15 * w, 0.1 * w], 'friction': 0.3},
+                                 {'circle': [0.8 * w, -1.15 * w, 0.1 * w]},
+                                 {'box': [-0.35 * w, -0.9 * w, -0.08 * w, -0.5 * w], 'friction': 0.5},
+                                 {'box': [1.08 * w, -0.9 * w, 1.35 * w, -0.5 * w]}])
+    return [('without', s), ('wind', dict(s, **air)), ('wind + 4 obstacles', dict(s, **world))]
+
+
+def world_cost(page, n, reps, progress):
+    """Wind and obstacles against the same dragged cloth without them (issue #24: four
+    obstacles and wind at most 15% more at 120x120): each run timed by itself over the same
+    frames, in rotated order each repetition; the medians' ratios to the run without."""
+    frames = max(5, int(math.ceil(20.0 * (60.0 / n) ** 2)))
+    warm = 120
+    scenes = world_scenes(n, warm + (reps + 1) * frames)
+    page.evaluate('(t) => __bench.worldSetup(t)', [json.dumps(s) for _, s in scenes])
+    for i in range(len(scenes)):
+        page.evaluate('([i, f]) => __bench.worldRound(i, f)', [i, warm])
+    samples = [[] for _ in scenes]
+    for r in range(reps):
+        progress('wind and obstacles %dx%d: round %d/%d' % (n, n, r + 1, reps))
+        for j in range(len(scenes)):
+            i = (r + j) % len(scenes)
+            samples[i].append(page.evaluate('([i, f]) => __bench.worldRound(i, f)', [i, frames]) / frames)
+    base = statistics.median(samples[0])
+    rows = [{'scene': label, 'ms_per_frame': statistics.median(samples[i]),
+             'vs_without': ratio(statistics.median(samples[i]), base)} for i, (label, _) in enumerate(scenes)]
+    return {'size': n, 'frames_per_batch': frames, 'reps': reps, 'rows': rows, 'target': WORLD_TARGET,
+            'met': rows[-1]['vs_without'] <= WORLD_TARGET}
+
+
 def tear_cost(page, kind, n, mode, progress):
     """Tearing's check on its own (issue #15: at most 5% of a frame of the default): the check
     of one frame (at a limit nothing reaches) timed by itself, against frames of the default
@@ -410,6 +452,9 @@ def bench(quick, progress):
             panels = compare_cost(page, sol_n, mode['sol_reps'], progress)
             progress('compare mode: %s' % ', '.join('%d panels %s' % (r['panels'], fmt_ratio(r['vs_one']))
                                                     for r in panels['rows']))
+            world = world_cost(page, WORLD_SIZE if not quick else max(sizes), mode['sol_reps'], progress)
+            progress('wind and obstacles: %s' % ', '.join('%s %s' % (r['scene'], fmt_ratio(r['vs_without']))
+                                                           for r in world['rows']))
             tear = []
             for n in sizes:
                 for kind in ('corners', 'dynamic'):
@@ -419,4 +464,4 @@ def bench(quick, progress):
                         kind, n, n, 100.0 * t['fraction']))
         finally:
             browser.close()
-    return rows, groups, sol, panels, tear, chromium
+    return rows, groups, sol, panels, tear, world, chromium
