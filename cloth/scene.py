@@ -38,19 +38,22 @@ OBSTACLE_SIZE = 1e4
 OBSTACLE_SHAPES = ['circle', 'box']
 
 # The page's Scene section: its number fields, in order, each with the hint it shows beside
-# its range and, for a `point` key, the component the field is (0: x, 1: y). A key that is
-# not `live` makes the grid: a change of it loads a new one.
+# its range and, for a key of two numbers, the one the field is (0 or 1) and the Scene
+# attributes that hold the two ([] for a key of one number). A key that is not `live` makes
+# the grid: a change of it loads a new one.
 SCENE_FIELDS = [
-    ['cols', '', 0],
-    ['rows', '', 0],
-    ['iterations', '', 0],
-    ['substeps', '', 0],
-    ['gravity', 'its y component: down is negative', 1],
-    ['damping', 'still air: the velocity lost per second', 0],
+    ['cols', '', 0, []],
+    ['rows', '', 0, []],
+    ['iterations', '', 0, []],
+    ['substeps', '', 0, []],
+    ['gravity', 'its y component: down is negative', 1, ['gravity_x', 'gravity_y']],
+    ['damping', 'still air: the velocity lost per second', 0, []],
     ['wind', 'its x component: the air\'s velocity, which pushes the cloth across its edges '
-     '(with the scene\'s drag)', 0],
+     '(with the scene\'s drag)', 0, ['wind_x', 'wind_y']],
+    ['gust', 'how far gusts swing the wind: 0.5 is \u00b150% at their peaks (the scene\'s gust '
+     'period, 1 s unless it says)', 0, ['gust_amplitude', 'gust_period']],
     ['tear', 'an edge breaks once its strain (length \u2212 rest) / rest passes this; empty: no tearing',
-     0],
+     0, []],
 ]
 
 
@@ -145,7 +148,8 @@ KEYS = [
     Key('drag', 'number', 0.0, 1e3, False, 'from 0 to 1000 N s/m^3 (the air\'s push across an '
         'edge, per square metre of cloth and m/s of air)', 'Drag', 'N\u00b7s/m\u00b3', True, 1, 0.1,
         None, 0, 100, 0.01),
-    Key('gust', 'gust', 0, 0, False, '', 'Gust', '', True, 0, [0.0, 1.0], None, 0, 0, 0),
+    Key('gust', 'gust', 0.0, 10.0, False, 'an amplitude from 0 to 10 (and a period from 0.01 to 3600 s)',
+        'Gusts', '', True, 0, [0.0, 1.0], None, 0, 10, 0.1),
     # Rigid shapes the cloth's free vertices stay out of: {"circle": [x, y, r]} or
     # {"box": [x0, y0, x1, y1]}, each with an optional friction (0 to 1). A person or the
     # script moves one with the `obstacle` action; a `set` leaves them where they are.

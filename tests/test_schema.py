@@ -117,7 +117,12 @@ def test_the_scene_sections_fields_are_number_keys_with_fields():
     from cloth.scene import SCENE_FIELDS
     k = {key.key: key for key in KEYS}
     assert len({f[0] for f in SCENE_FIELDS}) == len(SCENE_FIELDS)
-    for key, hint, axis in SCENE_FIELDS:
-        assert k[key].field_hi > k[key].field_lo and k[key].kind in ('int', 'number', 'point'), key
-        assert isinstance(hint, str) and axis in ((0, 1) if k[key].kind == "point" else (0,))
+    from cloth.scene import Scene
+    blank = Scene()
+    for key, hint, axis, parts in SCENE_FIELDS:
+        assert k[key].field_hi > k[key].field_lo and k[key].kind in ('int', 'number', 'point', 'gust'), key
+        assert isinstance(hint, str) and axis in ((0, 1) if parts else (0,))
+        # a key of two numbers: the Scene attributes that hold them, starting at its default
+        assert len(parts) in (0, 2) and (len(parts) == 2) == (k[key].kind in ('point', 'gust')), key
+        assert [getattr(blank, a) for a in parts] == (k[key].fallback if parts else []), key
     assert [f[0] for f in SCENE_FIELDS if not k[f[0]].live] == ['cols', 'rows']

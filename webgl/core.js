@@ -39,7 +39,7 @@ window.clothCore = (function (api) {
     });
     return { keys: keys, order: order, solvers: given[1].slice(), defaultSolver: given[2], ops: given[3].slice(),
              maxActions: given[4], maxPanels: given[5], maxVertices: given[6],
-             sceneFields: given[7].map(function (f) { return { key: f[0], hint: f[1], axis: f[2] }; }),
+             sceneFields: given[7].map(function (f) { return { key: f[0], hint: f[1], axis: f[2], parts: f[3].slice() }; }),
              solverLabels: given[8].slice(), seedSolver: given[9], handForce: given[10] };
   })();
 
@@ -63,8 +63,8 @@ window.clothCore = (function (api) {
     // cloth/scene.py (KEYS) and read here (cloth/api.py schema): {keys: {name: {kind, min,
     // max, minOpen, words, label, unit, live, panel, fallback, bySolver, field: {min, max,
     // step, int}}}, order: [names], solvers, defaultSolver, ops, maxActions, maxPanels,
-    // maxVertices, sceneFields: [{key, hint, axis}] (the Scene section's number fields; axis:
-    // a point key's component), solverLabels (by solvers' index), seedSolver, handForce (a
+    // maxVertices, sceneFields: [{key, hint, axis, parts}] (the Scene section's number fields;
+    // a key of two numbers: parts, the Scene attributes that hold them, and axis, the field's), solverLabels (by solvers' index), seedSolver, handForce (a
     // hand's most pull, in the cloth's weights)}. Made once; callers must not change it.
     schema: function () { return SCHEMA; },
     // edgesOf(cols, rows, shear) -> how many edges such a grid has (cloth/sim.py count_edges).

@@ -86,28 +86,29 @@ window.clothScenes = (function () {
   // The Scene section's number fields (cloth/scene.py SCENE_FIELDS), in order.
   const SCENE_FIELDS = SCHEMA.sceneFields.map(function (f) { return f.key; });
 
-  // A point key's field is one of its components (SCENE_FIELDS' axis): the Scene attribute
-  // that holds it, and the other one's.
-  const AXIS = {};
-  SCHEMA.sceneFields.forEach(function (f) { AXIS[f.key] = f.axis; });
-  function shown(key) { return key + (AXIS[key] ? '_y' : '_x'); }
-  function other(key) { return key + (AXIS[key] ? '_x' : '_y'); }
+  // A key of two numbers has a field for one of them (SCENE_FIELDS' axis): the Scene
+  // attribute that holds it, and the other one's.
+  const AXIS = {}, PARTS = {};
+  SCHEMA.sceneFields.forEach(function (f) { AXIS[f.key] = f.axis; PARTS[f.key] = f.parts; });
+  function pair(key) { return PARTS[key].length === 2; }
+  function shown(key) { return PARTS[key][AXIS[key]]; }
+  function other(key) { return PARTS[key][1 - AXIS[key]]; }
   // The other live fields start from their keys' defaults (gravity down, still air).
   SCHEMA.sceneFields.forEach(function (f) {
     const k = SCHEMA.keys[f.key];
-    if (k.live && !own(DEFAULT_PARAMS, f.key)) DEFAULT_PARAMS[f.key] = k.kind === 'point' ? k.fallback[f.axis] : k.fallback;
+    if (k.live && !own(DEFAULT_PARAMS, f.key)) DEFAULT_PARAMS[f.key] = pair(f.key) ? k.fallback[f.axis] : k.fallback;
   });
 
   // A Scene-section field's value in a scene as the core holds it (a cloth's `scene`).
   function fieldOf(scene, key) {
-    return SCHEMA.keys[key].kind === 'point' ? scene[shown(key)] : scene[key];
+    return pair(key) ? scene[shown(key)] : scene[key];
   }
 
   // The value a scene object takes for field `key` at value v (a point keeps its other
   // component, `rest`; a key whose 0 means none takes null); undefined for none where `omit`
   // (a scene written whole).
   function fieldValue(key, v, rest, omit) {
-    if (SCHEMA.keys[key].kind === 'point') return AXIS[key] ? [rest, v] : [v, rest];
+    if (pair(key)) return AXIS[key] ? [rest, v] : [v, rest];
     if (LIMITS[key].off && !(v > 0)) return omit ? undefined : null;
     return v;
   }
@@ -118,7 +119,8 @@ window.clothScenes = (function () {
   function writeParams(obj, p) {
     SCENE_FIELDS.forEach(function (key) {
       if (!SCHEMA.keys[key].live) return;
-      const v = fieldValue(key, p[key], Array.isArray(obj[key]) ? obj[key][1 - AXIS[key]] : 0, true);
+      const rest = !pair(key) ? 0 : Array.isArray(obj[key]) ? obj[key][1 - AXIS[key]] : SCHEMA.keys[key].fallback[1 - AXIS[key]];
+      const v = fieldValue(key, p[key], rest, true);
       if (v === undefined) delete obj[key]; else obj[key] = v;
     });
     obj.solver = p.solver;

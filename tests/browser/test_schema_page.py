@@ -62,7 +62,7 @@ def test_the_panels_fields_are_captioned_and_bounded_by_their_keys(open_page):
     shown = pg.js('''[...document.querySelectorAll('#scene-fields input')].map(
         (el) => [el.id, el.parentNode.title])''')
     assert [s[0] for s in shown] == PANEL_FIELDS
-    for (key, title), (_, hint, _axis) in zip(shown, SCENE_FIELDS):
+    for (key, title), (_, hint, _axis, _parts) in zip(shown, SCENE_FIELDS):
         assert title.lower() == hint.lower(), key
     for key in PANEL_FIELDS:
         text = pg.js('(id) => document.getElementById(id).parentNode.textContent.trim()', key)
@@ -78,15 +78,15 @@ def test_the_panels_fields_are_captioned_and_bounded_by_their_keys(open_page):
     # Each field is read from and written to its key: typed in, it is what the cloth runs
     # (a point key's field is its y component; a grid key makes a new grid).
     typed = {'iterations': '3', 'substeps': '5', 'gravity': '-4.5', 'damping': '0.5', 'tear': '0.7',
-             'cols': '9', 'rows': '8', 'wind': '3'}
+             'cols': '9', 'rows': '8', 'wind': '3', 'gust': '0.5'}
     assert set(typed) == set(PANEL_FIELDS)
     for key in PANEL_FIELDS:
         pg.fill('#' + key, typed[key])
         pg.press('#' + key, 'Enter')
     scene = pg.js('clothApp.cloth().scene')
     for key in PANEL_FIELDS:
-        axis = [f[2] for f in SCENE_FIELDS if f[0] == key][0]
-        got = scene[key + ('_y' if axis else '_x')] if k[key].kind == 'point' else scene[key]
+        axis, parts = [(f[2], f[3]) for f in SCENE_FIELDS if f[0] == key][0]
+        got = scene[parts[axis]] if parts else scene[key]
         assert got == float(typed[key]), key
         assert pg.input_value('#' + key) == typed[key], key
 
