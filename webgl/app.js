@@ -67,6 +67,10 @@
   const share = window.clothShare;
   const blade = window.clothBlade.create(document.getElementById('blade'));
   const obstacles = window.clothObstacles.create(document.getElementById('obstacles'));
+  // Picture and Video: the stage as drawn, the cloth's canvas and the obstacles' over it.
+  const capture = window.clothCapture.create([canvas, document.getElementById('obstacles')],
+                                             function (blob, name) { share.download(blob, name); },
+                                             function (text) { ui.note(text); });
   let bladeOn = false;      // the Cut tool (touch and pen cut with it; a mouse with Alt too)
 
   const ui = window.clothUI.create({
@@ -94,6 +98,8 @@
     replay: function () { replay(); },
     exportFile: function () { exportRecording(); },
     copyLink: function () { copyLink(); },
+    picture: function () { savePicture(); },
+    video: function () { ui.setVideo(capture.toggleVideo(mediaName())); },
     openFile: function (file) { openFile(file); },
     charts: function (on) { setCharts(on); },
     cutTool: function (on) { setCutTool(on === undefined ? !bladeOn : on); },
@@ -251,6 +257,16 @@
     return share.copyLink(recordingText(), ui.note);
   }
 
+  // A picture's or a video's name: the preset (or 'scene') and the frame it starts at.
+  function mediaName() { return 'cloth-' + (state.preset || 'scene') + '-f' + (sess ? sess.frame : 0); }
+
+  // Drawn now and saved in the same task (the WebGL canvas keeps its pixels until shown).
+  function savePicture() {
+    if (!renderer.ok) { ui.note('Picture: there is no WebGL drawing to save'); return null; }
+    render();
+    return capture.picture(mediaName());
+  }
+
   function openFile(file) {
     share.readFile(file).then(function (text) {
       load(text, 'custom', null);
@@ -404,6 +420,7 @@
       p.draw.draw(core.snapshot(p.cloth, p.snap), state.mode, state.scale);
     }
     obstacles.draw(state.panels, state.rects, gestures.moving());
+    capture.drawn();
     const ms = performance.now() - t0;
     state.renderMs = Number.isFinite(state.renderMs) ? state.renderMs + EMA * (ms - state.renderMs) : ms;
     state.dirty = false;

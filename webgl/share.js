@@ -178,8 +178,9 @@ window.clothShare = (function () {
   }
 
   // Save text as a file: a Blob download, which works from file:// with no server.
-  function download(text, name) {
-    const url = URL.createObjectURL(new Blob([text], { type: 'application/json' }));
+  // Save `data` (a Blob, or JSON text) as a file `name` (the browser's download).
+  function download(data, name) {
+    const url = URL.createObjectURL(data instanceof Blob ? data : new Blob([data], { type: 'application/json' }));
     const a = document.createElement('a');
     a.href = url;
     a.download = name;
@@ -263,5 +264,5 @@ window.clothShare = (function () {
   }
 
   return { fileName: fileName, exportText: exportText, copyLink: copyLink, linkFor: linkFor, sceneIn: sceneIn,
-           fromText: fromText, readFile: readFile };
+           fromText: fromText, readFile: readFile, download: download };
 })();

@@ -52,6 +52,7 @@ window.clothUI = (function () {
 
   // h: {pause, step, reset, preset(name), solver(name), material(name), param(key, raw), mode(m),
   //     scaleMode(m), fullScale(raw), loadJson(text), currentJson() -> text, replay, exportFile, copyLink,
+  //     picture, video,
   //     openFile(file), charts(on), cutTool(on)}
   function create(h) {
     const el = {
@@ -173,6 +174,8 @@ window.clothUI = (function () {
     $('btn-cut').addEventListener('click', function () { h.cutTool(); });
     $('btn-replay').addEventListener('click', function () { h.replay(); });
     $('btn-export').addEventListener('click', function () { h.exportFile(); });
+    $('btn-picture').addEventListener('click', function () { h.picture(); });
+    $('btn-video').addEventListener('click', function () { h.video(); });
     $('btn-link').addEventListener('click', function () { h.copyLink(); });
     $('btn-open').addEventListener('click', function () { el.fileInput.click(); });
     el.fileInput.addEventListener('change', function () {
@@ -252,6 +255,11 @@ window.clothUI = (function () {
         $('btn-cut').classList.toggle('on', on);
       },
       setPreset: function (name) { el.preset.value = name; },
+      // The Video button says whether it records.
+      setVideo: function (on) {
+        $('btn-video').textContent = on ? 'Stop video' : 'Video';
+        $('btn-video').setAttribute('aria-pressed', on ? 'true' : 'false');
+      },
       // The live charts shown or not, and their box checked to say so.
       setCharts: function (on) { $('charts-on').checked = on; $('charts').hidden = !on; },
       // The help's words for the Auto scale's floor (readouts.js AUTO_FLOOR).

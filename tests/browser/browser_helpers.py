@@ -1,5 +1,7 @@
 """Paths, launch flags and small helpers shared by the browser tests."""
 import os
+import struct
+import zlib
 import pathlib
 import time
 
@@ -73,3 +75,54 @@ def load_paused(pg, text):
     """Load a scene and pause in one task: no animation frame runs between them (from two
     calls, a loaded machine ran frames in the gap, and a test's frame numbers drifted)."""
     pg.js('(t) => { clothApp.loadScene(t); clothApp.setPaused(true); }', text)
+
+
+def png_rgb(data):
+    """(width, height, rows of RGB(A) bytes) of an 8-bit, non-interlaced PNG: enough for a
+    screenshot, with no imaging library."""
+    assert data[:8] == b'\x89PNG\r\n\x1a\n'
+    pos, idat = 8, b''
+    while pos < len(data):
+        length, kind = struct.unpack('>I4s', data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b'IHDR':
+            width, height, depth, colour, _, _, interlace = struct.unpack('>IIBBBBB', body)
+            assert depth == 8 and colour in (2, 6) and interlace == 0, (depth, colour, interlace)
+        elif kind == b'IDAT':
+            idat += body
+        pos += 12 + length
+    bpp = 3 if colour == 2 else 4
+    raw, stride = zlib.decompress(idat), width * bpp
+    rows, prev = [], bytearray(stride)
+    for r in range(height):
+        f, line = raw[r * (stride + 1)], bytearray(raw[r * (stride + 1) + 1:(r + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            if f == 1:
+                line[i] = (line[i] + a) & 255
+            elif f == 2:
+                line[i] = (line[i] + b) & 255
+            elif f == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        prev = line
+    return width, height, bpp, rows
+
+
+SETTLED = '''() => { const c = document.getElementById('view'), r = c.getBoundingClientRect();
+    const key = [innerWidth, innerHeight, r.width, r.height, c.width, c.height].join();
+    if (window.__settle !== key) { window.__settle = key; window.__since = performance.now(); return false; }
+    return performance.now() - window.__since > 300 && c.width === Math.round(r.width * devicePixelRatio)
+        && c.height === Math.round(r.height * devicePixelRatio); }'''
+
+
+def wait_settled(pg):
+    """The window at its size: a fresh engine window may still be resized after the page
+    loaded (WebKit under Xvfb), and a press or a picture computed before that lands where the
+    view no longer is. Settled: the same sizes for 300 ms, the drawing buffer following."""
+    pg.wait_for_function(SETTLED)

@@ -3,7 +3,7 @@ recorded and replayed. Runs in Chromium here and in Firefox and WebKit (tests/en
 import json
 import sys
 
-from browser_helpers import ROOT
+from browser_helpers import ROOT, wait_settled
 
 sys.path.insert(0, str(ROOT))
 from cloth import api  # noqa: E402
@@ -20,13 +20,7 @@ def test_an_obstacle_is_drawn_dragged_through_the_cloth_and_replays(open_page):
          'obstacles': [{'box': [-0.5, -0.8, -0.2, -0.4], 'friction': 0.5}, {'circle': [0.6, -1.5, 0.15]}]}))
     pg.js('clothApp.setPaused(true)')
     pg.js('clothApp.advance(30)')
-    # The window at its size: a fresh engine window may still be resized after the page
-    # loaded (WebKit under Xvfb), and a press computed before that lands where the view no
-    # longer puts the box. Settled: the same sizes for 300 ms, the drawing buffer following.
-    pg.wait_for_function('''() => { const c = document.getElementById('view'), r = c.getBoundingClientRect();
-        const key = [innerWidth, innerHeight, r.width, r.height, c.width, c.height].join();
-        if (window.__settle !== key) { window.__settle = key; window.__since = performance.now(); return false; }
-        return performance.now() - window.__since > 300 && c.width === Math.round(r.width * devicePixelRatio); }''')
+    wait_settled(pg)
     # Drawn and sampled in one task: a layout change between would move the view.
     x, y, lit = pg.js('''() => { clothApp.advance(0); const p = clothApp.clientOf(-0.35, -0.6);
         const c = document.getElementById('obstacles'), r = c.getBoundingClientRect();

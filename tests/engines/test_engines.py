@@ -13,17 +13,16 @@ pointerType "touch" actions as mouse events). Dispatched events are untrusted, s
 setPointerCapture throws and is skipped (input.js); everything after the event is the same code.
 """
 import json
-import struct
 import sys
-import zlib
 
 import pytest
 
-from browser_helpers import DIST, ROOT, free_vertex
+from browser_helpers import DIST, ROOT, free_vertex, png_rgb
 import test_page
 import test_recording_page as rec
 import test_render
 import test_obstacles_page as obstacles_page
+import test_capture_page as capture_page
 from test_parity import SCENES, grid
 
 sys.path.insert(0, str(ROOT))
@@ -154,43 +153,6 @@ def test_webgl1_path_and_no_webgl_message(open_page):
 
 def test_context_loss_and_restore(open_page):
     test_render.test_context_loss_and_restore(open_page)
-
-
-def png_rgb(data):
-    """(width, height, rows of RGB(A) bytes) of an 8-bit, non-interlaced PNG: enough for a
-    screenshot, with no imaging library."""
-    assert data[:8] == b'\x89PNG\r\n\x1a\n'
-    pos, idat = 8, b''
-    while pos < len(data):
-        length, kind = struct.unpack('>I4s', data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        if kind == b'IHDR':
-            width, height, depth, colour, _, _, interlace = struct.unpack('>IIBBBBB', body)
-            assert depth == 8 and colour in (2, 6) and interlace == 0, (depth, colour, interlace)
-        elif kind == b'IDAT':
-            idat += body
-        pos += 12 + length
-    bpp = 3 if colour == 2 else 4
-    raw, stride = zlib.decompress(idat), width * bpp
-    rows, prev = [], bytearray(stride)
-    for r in range(height):
-        f, line = raw[r * (stride + 1)], bytearray(raw[r * (stride + 1) + 1:(r + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - bpp] if i >= bpp else 0
-            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
-            if f == 1:
-                line[i] = (line[i] + a) & 255
-            elif f == 2:
-                line[i] = (line[i] + b) & 255
-            elif f == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(line)
-        prev = line
-    return width, height, bpp, rows
 
 
 def test_a_screenshot_shows_what_the_page_drew(open_page):
@@ -612,3 +574,11 @@ def test_the_blade_cuts(open_page):
 
 def test_an_obstacle_is_drawn_dragged_through_the_cloth_and_replays(open_page):
     obstacles_page.test_an_obstacle_is_drawn_dragged_through_the_cloth_and_replays(open_page)
+
+
+def test_picture_is_the_stage_at_device_pixels(open_page):
+    capture_page.test_picture_is_the_stage_at_device_pixels(open_page)
+
+
+def test_video_records_the_stage_or_says_why_not(open_page):
+    capture_page.test_video_records_the_stage_or_says_why_not(open_page)
