@@ -212,9 +212,11 @@ window.clothScenes = (function () {
       params: { cols: 60, rows: 3 },
       size: 2.0,
       pins: function () { return []; },
+      // The peg at least a spacing in radius: a thinner one fits between two vertices, and a
+      // coarse towel (10 columns) slid off it through the edge over it (measured: free fall).
       keys: function (cols, rows, spacing) {
         const w = (cols - 1) * spacing;
-        return { obstacles: [{ circle: [0.5 * w, -0.35 * w, 0.04 * w], friction: 0.6 }] };
+        return { obstacles: [{ circle: [0.5 * w, -0.35 * w, Math.max(0.04 * w, spacing)], friction: 0.6 }] };
       },
       view: function (w) { return { x0: 0.2 * w, x1: 0.8 * w, y0: -0.95 * w, y1: 0.05 * w }; },
     },
