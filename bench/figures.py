@@ -21,7 +21,7 @@ import time
 from bench.page import HARNESS, page_of, open_page
 from bench.physics import edge_strains
 from cloth.reference import pendulum_period, slack_hang
-from cloth.scene import Scene
+from cloth.scene import Scene, SEED_SOLVER, solver_defaults, spec
 
 # Large cloth and Tearable are the Curtain at other default grids (and Tearable with a tear
 # limit): at the same size they are the same scene at rest, measured once as the Curtain.
@@ -31,7 +31,9 @@ SLEEP_CAP = 1800               # 30 s: a preset not asleep by then is reported a
 AWAKE_MORE = 600               # the same cloth kept awake 10 s longer
 PENDULUM_LENGTHS = [0.25, 1.0, 4.0]
 PENDULUM_PERIODS = 3
-SEED = {'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}
+# The seed's method with its own steps (cloth/scene.py's declarations).
+SEED = dict({'solver': SEED_SOLVER}, **{k: solver_defaults(SEED_SOLVER)[k] for k in ('substeps', 'iterations')})
+DT = spec('dt').fallback
 STRETCH_SIZES = [30, 60, 120]
 SETTLE = 600
 SWEEP_SIZES = [30, 60, 120]
@@ -61,7 +63,7 @@ def farthest(a, b):
 
 def pendulum(length, **keys):
     scene = {'cols': 2, 'rows': 1, 'spacing': length, 'pins': [0], 'gravity': [0, -G],
-             'dt': 1 / 60, 'damping': 0}
+             'dt': DT, 'damping': 0}
     scene.update(keys)
     return scene
 
@@ -141,7 +143,7 @@ def pendulum_table(page, progress):
             scene = pendulum(length, **keys)
             track = page.evaluate('([t, f, k]) => __bench.track(t, f, k)',
                                   [json.dumps(scene), frames, 1])
-            crossings, heights = swings(track, length, 1 / 60)
+            crossings, heights = swings(track, length, DT)
             # Periods from every other crossing; heights: the first turning point after the
             # release at the horizontal (height = length), then one per half period.
             periods = [b - a for a, b in zip(crossings, crossings[2:])]
@@ -200,7 +202,7 @@ def sweep_table(page, quick, progress):
     for n in ([30] if quick else SWEEP_SIZES):
         for label, keys in SWEEP_CONFIGS:
             scene = {'cols': n, 'rows': n, 'spacing': 1.0 / (n - 1), 'pins': [0],
-                     'gravity': [0, -G], 'dt': 1 / 60}
+                     'gravity': [0, -G], 'dt': DT}
             scene.update(keys)
             r = page.evaluate('([t, f]) => __bench.motion(t, f)', [json.dumps(scene), SWEEP_FRAMES])
             rows.append(dict(r, n=n, config=label))

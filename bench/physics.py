@@ -20,6 +20,7 @@ import time
 
 from bench.page import open_page
 from cloth.reference import hanging_column_strains, elastic_chain
+from cloth.scene import SEED_SOLVER, solver_defaults
 
 RELEASE_PRESETS = ['curtain', 'corners', 'chain', 'large', 'tearable']
 SIZES = [10, 30, 60, 120, 200]
@@ -33,7 +34,8 @@ DIRECTIONS = [('down', 0.0, -1.0), ('up', 0.0, 1.0), ('aside', 1.0, 0.0)]
 # method (which ignores the stiffness).
 CONFIGS = [('default, its material', {}),
            ('default, inextensible', {'material': 'inextensible'}),
-           ('seed', {'solver': 'jakobsen', 'substeps': 1, 'iterations': 20})]
+           ('seed', dict({'solver': SEED_SOLVER},
+                         **{k: solver_defaults(SEED_SOLVER)[k] for k in ('substeps', 'iterations')}))]
 FIELD_SIZES = [30, 60, 120]
 FIELD_SETTLE = 600             # 10 s at damping 1/s
 FINE = 8                       # the converged run: 8x the substeps
