@@ -266,6 +266,9 @@ window.clothScenes = (function () {
     const margin = 0.08 * big;
     const below = (sag === undefined ? 0.2 : sag) * big;
     const v = { x0: -margin, x1: w + margin, y0: -h - below - margin, y1: margin };
+    // A wind leans the cloth downwind, up to its height: room for it on that side.
+    const wind = Array.isArray(scene.wind) && Number.isFinite(scene.wind[0]) ? scene.wind[0] : 0;
+    if (wind > 0) v.x1 += h + below; else if (wind < 0) v.x0 -= h + below;
     // Obstacles near the cloth are in view too (up to a cloth's size around it: a floor
     // 10 km wide would shrink the cloth to a dot).
     const near = { x0: v.x0 - big, x1: v.x1 + big, y0: v.y0 - big, y1: v.y1 + big };
