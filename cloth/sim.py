@@ -18,7 +18,7 @@ from cloth.host import f64, i32
 from cloth.scene import SceneError, OBSTACLE_FAR, SEED_SOLVER
 from cloth.solve import blow, integrate, sweep_jakobsen, sweep_xpbd, project_cells, \
     solve_lines, clear, max_motion2, copy_into, mark_crossed, \
-    mark_overstretched, drive_hands, limit_speed, follow_velocity, collide, N_CONSTS, K_SPACING, K_TOLERANCE, K_ALPHA, \
+    mark_overstretched, drive_hands, limit_speed, follow_velocity, collide, shield_edges, N_CONSTS, K_SPACING, K_TOLERANCE, K_ALPHA, \
     K_STRETCH, K_KEEP, K_AX, K_AY, K_MAX_STEP, K_TEAR2, K_HAND_STEP, K_HAND_SHARE, K_HAND_PUSH, \
     K_WIND_X, K_WIND_Y, K_AIR
 from cloth.measure import deformation, nearest_vertex
@@ -230,6 +230,9 @@ class Cloth:
         self.obstacle_was = f64(2 * m)
         self.obstacle_to = f64(2 * m)
         self.obstacle_bounds = f64(4 * m)     # each one's swept box in a step (solve.collide)
+        # Each row's box and the obstacles that can meet its edges (solve.shield_edges).
+        self.obstacle_row_box = f64(4 * self.rows if m > 0 else 0)
+        self.obstacle_row_mask = i32(self.rows if m > 0 else 0)
         for j in range(m):
             o = obstacles[j]
             self.obstacle_shape[j] = o[0]
@@ -675,7 +678,18 @@ def push_out(cloth):
         was[i] = at[i]
         at[i] = to[i] if share == 1.0 else at[i] + (to[i] - at[i]) * share
     collide(cloth.pos, cloth.prev, cloth.inv_mass, cloth.cols, cloth.rows, m, cloth.obstacle_shape,
-            cloth.obstacle_half, was, at, cloth.obstacle_friction, cloth.obstacle_bounds)
+            cloth.obstacle_half, was, at, cloth.obstacle_friction, cloth.obstacle_bounds,
+            cloth.obstacle_row_box)
+    if shield_edges(cloth.pos, cloth.prev, cloth.inv_mass, cloth.edge_a, cloth.edge_b, cloth.n_edges,
+                    cloth.cols, cloth.rows, m, cloth.obstacle_shape, cloth.obstacle_half, was, at,
+                    cloth.obstacle_row_box, cloth.obstacle_row_mask) == 0:
+        return
+    # The edges' push may have put a vertex into another obstacle, or back into this one at a
+    # corner: the vertices once more, from where they now are (a still test).
+    copy_into(cloth.obstacle_was, at, m + m)
+    collide(cloth.pos, cloth.pos, cloth.inv_mass, cloth.cols, cloth.rows, m, cloth.obstacle_shape,
+            cloth.obstacle_half, at, at, cloth.obstacle_friction, cloth.obstacle_bounds,
+            cloth.obstacle_row_box)
 
 
 def move_obstacle(cloth, j, x, y):

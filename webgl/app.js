@@ -284,12 +284,15 @@
     return load(JSON.stringify(made.scene), name, made.view);
   }
 
+  // A new start: what the notes said of the old one is over.
   function reset() {
+    ui.note('');
     return load(state.sceneText, state.preset, state.view);
   }
 
   function loadScene(text) {
     if (typeof text !== 'string') text = JSON.stringify(text);
+    ui.note('');      // what the notes said of the old scene is over (load may say something new)
     load(text, 'custom', null);
     return true;
   }

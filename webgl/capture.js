@@ -93,7 +93,7 @@ window.clothCapture = (function () {
              v.type.split(';')[0] + ', ' + Math.round(blob.size / 1024) + ' kB)');
       };
       recorder.start(250);
-      note('Recording video (' + type.split(';')[0] + '): Video again stops and saves it');
+      note('Recording video (' + type.split(';')[0] + '): Stop video saves it');
       return true;
     }
 
