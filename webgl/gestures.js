@@ -28,6 +28,7 @@ window.clothGestures = (function () {
     const blades = new Map();
     // pointerId -> {panel, j, ox, oy (centre - pointer, m)}: pointers that move an obstacle
     const movers = new Map();
+    let lastMoved = -1;     // the obstacle a pointer last took and still moves (-1: none)
 
     function pickAt(clientX, clientY, radiusCss) {
       const at = view.locate(clientX, clientY);
@@ -53,6 +54,7 @@ window.clothGestures = (function () {
           if (taken) return false;
           const c = view.centreOf(j);
           movers.set(id, { panel: at.panel, j: j, ox: c[0] - at.x, oy: c[1] - at.y });
+          lastMoved = j;
           return true;
         }
         const hit = pickAt(clientX, clientY, radiusCss);
@@ -83,6 +85,7 @@ window.clothGestures = (function () {
         if (m) {
           if (landed) { const w = view.toWorld(m.panel, clientX, clientY); act.obstacle(m.j, w[0] + m.ox, w[1] + m.oy); }
           movers.delete(id);
+          if (m.j === lastMoved) lastMoved = -1;
           return -1;
         }
         const h = hands.get(id);
@@ -132,6 +135,7 @@ window.clothGestures = (function () {
         });
         hands.clear();
         movers.clear();
+        lastMoved = -1;
         next.forEach(function (h, id) { hands.set(id, h); });
       },
       // The kept hands hold their vertex of the new cloth where it is, with their offset to
@@ -152,12 +156,9 @@ window.clothGestures = (function () {
         return out;
       },
       count: function () { return hands.size; },
-      // The obstacle a pointer moves, or -1 (the overlay draws it lit).
-      moving: function () {
-        let j = -1;
-        movers.forEach(function (m) { j = m.j; });
-        return j;
-      },
+      // The obstacle a pointer moves, or -1 (the overlay draws it lit; read every drawing, so
+      // a variable, not a walk of the pointers).
+      moving: function () { return lastMoved; },
       // The view changed (a resize): put each held vertex back under its pointer.
       reproject: function () { hands.forEach(function (h) { follow(h, h.cx, h.cy); }); },
       // Does a pointer hold vertex k?
