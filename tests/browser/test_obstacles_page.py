@@ -86,3 +86,25 @@ def test_the_new_presets_at_every_size_keep_what_they_hold_and_do_not_fling(open
                     assert got['top'] > got['peg'], (cols, d, got)     # still over its peg
             if preset == 'peg':
                 assert still['top'] > still['peg'], (cols, still)
+
+
+def test_the_wind_and_gusts_fields_set_the_air_live_and_record_it(open_page):
+    """The air's controls (issue #24.2) in the panel: a value typed into Wind and Gusts (the
+    field's change event, what a person's Enter or leaving the field sends) sets the running
+    cloth's air, is recorded as a `set`, and the recording replays in CPython to the page's
+    positions; nonsense keeps the old value and says why."""
+    pg = open_page('?paused=1')
+    pg.js('clothApp.advance(30)')
+    typed = '''([id, text]) => { const el = document.getElementById(id); el.value = text;
+                                  el.dispatchEvent(new Event('change')); }'''
+    pg.js(typed, ['wind', '6'])
+    pg.js(typed, ['gust', '0.5'])
+    scene = pg.js('clothApp.cloth().scene')
+    assert (scene['wind_x'], scene['gust_amplitude']) == (6, 0.5)
+    pg.js(typed, ['wind', 'abc'])
+    assert pg.js('clothApp.cloth().scene')['wind_x'] == 6 and 'Wind' in pg.info()['note']
+    pg.js('clothApp.advance(40)')
+    text = pg.js('clothApp.recording()')
+    sets = [a['scene'] for a in json.loads(text)['actions'] if a['op'] == 'set']
+    assert {'wind': [6, 0]} in sets and any('gust' in s for s in sets), sets
+    assert json.loads(api.run(text))['positions'] == pg.state()['positions']

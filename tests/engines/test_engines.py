@@ -582,3 +582,7 @@ def test_picture_is_the_stage_at_device_pixels(open_page):
 
 def test_video_records_the_stage_or_says_why_not(open_page):
     capture_page.test_video_records_the_stage_or_says_why_not(open_page)
+
+
+def test_the_wind_and_gusts_fields_set_the_air_live_and_record_it(open_page):
+    obstacles_page.test_the_wind_and_gusts_fields_set_the_air_live_and_record_it(open_page)
