@@ -9,7 +9,7 @@ from cloth.scene import (parse_scene, fail, MAX_FRAMES, MATERIALS,
                          DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large, KEYS, SOLVERS, SOLVER_LABELS, SEED_SOLVER,
                          DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES,
                          unused_settings, SCENE_FIELDS)
-from cloth.sim import HAND_FORCE, obstacle_under, Cloth, count_edges, frame, measure, grab, move, move_by, release, pin, unpin, cut, \
+from cloth.sim import HAND_FORCE, obstacle_under, inside_obstacles, Cloth, count_edges, frame, measure, grab, move, move_by, release, pin, unpin, cut, \
     nearest
 from cloth.script import apply_settings, apply_due as due
 from cloth.session import open_session, step_panel, frames_ran, frames_left, at_replay_end, \
@@ -79,7 +79,8 @@ def operations():
     arguments into fresh arrays on every call, which the hot loop must not do."""
     return [['frame', frame], ['measure', measure], ['grab', grab], ['move', move],
             ['move_by', move_by], ['release', release], ['pin', pin], ['unpin', unpin],
-            ['nearest', nearest], ['cut', cut], ['obstacle_under', obstacle_under]]
+            ['nearest', nearest], ['cut', cut], ['obstacle_under', obstacle_under],
+            ['inside_obstacles', inside_obstacles]]
 
 
 def tear_check(cloth, most):

@@ -709,6 +709,30 @@ def move_obstacle(cloth, j, x, y):
     cloth.still_frames = 0
 
 
+def inside_obstacles(cloth):
+    """How many free vertices are inside an obstacle now (a scene that starts them there: the
+    first step pushes them out, which tangles the cloth; the page says so)."""
+    count = 0
+    for k in range(cloth.n_verts):
+        if cloth.inv_mass[k] == 0.0:
+            continue
+        x = cloth.pos[k + k]
+        y = cloth.pos[k + k + 1]
+        for j in range(cloth.n_obstacles):
+            dx = x - cloth.obstacle_at[j + j]
+            dy = y - cloth.obstacle_at[j + j + 1]
+            hx = cloth.obstacle_half[j + j]
+            hy = cloth.obstacle_half[j + j + 1]
+            if cloth.obstacle_shape[j] == 0:
+                if dx * dx + dy * dy < hx * hx:
+                    count += 1
+                    break
+            elif dx > -hx and dx < hx and dy > -hy and dy < hy:
+                count += 1
+                break
+    return count
+
+
 def obstacle_under(cloth, x, y):
     """The index of the obstacle whose shape, where it is going (`to`), holds (x, y); the last
     one drawn (the highest index) first; -1 for none."""

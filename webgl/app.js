@@ -190,6 +190,12 @@
     const work = scenes.workOf(obj) * Math.max(1, state.compare.length);
     state.slowWork = work > scenes.REAL_TIME_WORK ? work : 0;
     if (state.slowWork) ui.note(scenes.slowNote(state.slowWork));
+    // A scene that starts its cloth inside an obstacle: pushed out at once, tangled.
+    const inside = state.cloth.n_obstacles > 0 ? state.panels[0].run.ops.inside_obstacles() : 0;
+    if (inside > 0) {
+      ui.note(inside + (inside === 1 ? ' vertex starts' : ' vertices start') + ' inside an obstacle: the first ' +
+              'step pushes them out, which tangles the cloth; move the obstacle or the cloth in the scene');
+    }
     state.replaying = sess.replay_end > 0;
     if (sess.replay_end === 0) { session.atReplayEnd(sess); setPaused(true); }
     else if (sess.replay_end > 0) setPaused(false);

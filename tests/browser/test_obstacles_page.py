@@ -108,3 +108,13 @@ def test_the_wind_and_gusts_fields_set_the_air_live_and_record_it(open_page):
     sets = [a['scene'] for a in json.loads(text)['actions'] if a['op'] == 'set']
     assert {'wind': [6, 0]} in sets and any('gust' in s for s in sets), sets
     assert json.loads(api.run(text))['positions'] == pg.state()['positions']
+
+
+def test_a_scene_that_starts_its_cloth_inside_an_obstacle_says_so(open_page):
+    pg = open_page('?paused=1')
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps(
+        {'cols': 10, 'rows': 10, 'spacing': 0.1, 'pins': [0, 9], 'obstacles': [{'circle': [0.45, -0.45, 0.2]}]}))
+    inside = sum(1 for x, y in pg.state()['positions'] if (x - 0.45) ** 2 + (y + 0.45) ** 2 < 0.04)
+    assert inside > 0 and pg.info()['note'].startswith('%d vertices start inside an obstacle' % inside)
+    pg.js("clothApp.usePreset('peg')")                        # one that starts clear says nothing
+    assert pg.info()['note'] == ''
