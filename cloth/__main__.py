@@ -11,7 +11,9 @@ import tempfile
 
 from cloth.api import run, load, start, frames_of, simulate, result_of
 from cloth.host import to_json
-from cloth.scene import SceneError, MAX_SCENE_BYTES, too_large
+from cloth.values import SceneError
+from cloth.keys import MAX_SCENE_BYTES
+from cloth.scene import too_large
 
 
 class Parser(argparse.ArgumentParser):

@@ -5,17 +5,23 @@ returns, and the parity tests compare its CPython and browser results number for
 """
 
 from cloth.host import to_json, kind_of, is_finite, parse_json
-from cloth.scene import (parse_scene, fail, MAX_FRAMES, MATERIALS,
-                         DEFAULT_MATERIAL, MAX_SCENE_BYTES, too_large, KEYS, SOLVERS, SOLVER_LABELS, SEED_SOLVER,
-                         DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES,
-                         unused_settings, SCENE_FIELDS)
-from cloth.sim import HAND_FORCE, obstacle_under, inside_obstacles, Cloth, count_edges, frame, measure, grab, move, move_by, release, pin, unpin, cut, \
-    nearest
+from cloth.keys import KEYS, OPS, MAX_FRAMES, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, \
+    MAX_SCENE_BYTES, SCENE_FIELDS, MODEL
+from cloth.values import fail
+from cloth.solvers import SOLVERS, SOLVER_LABELS, DEFAULT_SOLVER, SEED_SOLVER
+from cloth.fabrics import FABRICS, DEFAULT_FABRIC
+from cloth.scene import parse_scene, too_large, unused_settings, legacy_note
+from cloth.presets import PRESETS, preset_scene, preset_view
+from cloth.topology import count_edges
+from cloth.hands import HAND_FORCE, HAND_RADIUS, grab, move, move_by, release, pin, unpin
+from cloth.sleep import SLEEP_IMBALANCE
+from cloth.obstacles import obstacle_under, inside_obstacles
+from cloth.step import new_cloth, frame, cut
+from cloth.measure import measure, nearest, energies
 from cloth.script import apply_settings, apply_due as due
 from cloth.session import open_session, step_panel, frames_ran, frames_left, at_replay_end, \
-    gesture_grab, gesture_move, gesture_release, gesture_toggle_pin, gesture_cut, gesture_obstacle, change, \
-    recording_text, recording_complete, recording_count, recording_full
-from cloth.solve import mark_overstretched
+    gesture_grab, gesture_move, gesture_release, gesture_toggle_pin, gesture_cut, \
+    gesture_obstacle, change, recording_text, recording_complete, recording_count, recording_full
 
 # A trace holds frames x vertices points. The CLI streams it (cloth/__main__.py: memory
 # stays that of one frame); in memory, as `run` holds it, it would be gigabytes.
@@ -23,9 +29,9 @@ MAX_TRACE_POINTS = 20000000
 
 
 def load(scene_json_text, panel=-1):
-    """Scene JSON text -> a Cloth ready to step (SceneError if the scene is bad); with
-    `panel` >= 0, the cloth of that panel of the scene's `compare` list."""
-    return Cloth(parse_scene(scene_json_text, panel))
+    """Scene JSON text -> a cloth ready to step (SceneError if the scene is bad); with `panel`
+    >= 0, the cloth of that panel of the scene's `compare` list."""
+    return new_cloth(parse_scene(scene_json_text, panel))
 
 
 def check(scene_json_text, panel=-1):
@@ -33,31 +39,43 @@ def check(scene_json_text, panel=-1):
     return parse_scene(scene_json_text, panel)
 
 
-def materials():
-    """The named fabrics of the page's Material control (scene.MATERIALS: name, label,
-    density kg/m^2, stiffness N/m) and the presets' own, declared once for both runtimes."""
-    return [MATERIALS, DEFAULT_MATERIAL]
+def fabrics():
+    """[FABRICS (name, label, stretch N/m, shear N/m, density kg/m^2, what it is), the
+    presets' fabric], declared once for both runtimes (cloth/fabrics.py)."""
+    return [FABRICS, DEFAULT_FABRIC]
+
+
+def presets():
+    """[[name, label, cols, rows, size m], ...]: the Preset menu (cloth/presets.py)."""
+    return PRESETS
+
+
+def preset(name, cols, rows):
+    """[the preset's scene object on a cols x rows grid, its view box or []]."""
+    return [preset_scene(name, cols, rows), preset_view(name, cols, rows)]
 
 
 def schema():
-    """The scene's keys as scene.KEYS declares them (each a Key: kind, range and its words,
-    label, unit, live, panel, defaults, the page's field range), and the limits and names the
-    page's other parts check against: [keys, solvers, default solver, action ops, most actions,
-    most panels, most vertices, the Scene section's fields, the solvers' labels, the seed's solver,
-    a hand's most force in the cloth's weights]. The page derives its fields, the compare editor and the
-    recorder from these, so that a key is declared once."""
+    """The scene's keys as cloth/keys.py declares them, and the limits and names the page's
+    other parts check against: [keys, solvers, default solver, action ops, most actions, most
+    panels, most vertices, the Scene section's fields, the solvers' labels, the seed's solver,
+    a hand's force (N), a hand's grip radius (m), the model, the imbalance a cloth at rest has
+    at most]. The page derives its fields, the compare editor and the recorder from these, so
+    that a key is declared once."""
     return [KEYS, SOLVERS, DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, SCENE_FIELDS,
-            SOLVER_LABELS, SEED_SOLVER, HAND_FORCE]
+            SOLVER_LABELS, SEED_SOLVER, HAND_FORCE, HAND_RADIUS, MODEL, SLEEP_IMBALANCE]
 
 
-def unused(cloth):
-    """What of the cloth's settings its solver does not use, in words ('' for none)."""
-    return unused_settings(cloth.scene)
+def notes(cloth):
+    """[what of the cloth's settings its solver leaves unused, what running an older scene
+    under the membrane did] in words ('' for none)."""
+    return [unused_settings(cloth.scene), legacy_note(cloth.scene)]
 
 
-def edges_of(cols, rows, shear):
-    """How many edges such a grid has (sim.count_edges): the page's cost estimate."""
-    return count_edges(cols, rows, shear)
+def edges_of(cols, rows):
+    """[structural edges, all edges] of such a grid (topology.count_edges): the page's cost
+    estimate."""
+    return count_edges(cols, rows)
 
 
 def session_functions():
@@ -74,34 +92,25 @@ def session_functions():
 
 def operations():
     """[[name, function]] of the operations the page calls on a running cloth, every frame or
-    every pointer event: cloth/sim.py's module functions, each taking the cloth first. The page
-    calls them as they are, because a Transcrypt bound method (cloth.frame()) copies its
-    arguments into fresh arrays on every call, which the hot loop must not do."""
+    every pointer event, each taking the cloth first. The page calls them as they are, because
+    a Transcrypt bound method copies its arguments into fresh arrays on every call, which the
+    hot loop must not do."""
     return [['frame', frame], ['measure', measure], ['grab', grab], ['move', move],
             ['move_by', move_by], ['release', release], ['pin', pin], ['unpin', unpin],
             ['nearest', nearest], ['cut', cut], ['obstacle_under', obstacle_under],
-            ['inside_obstacles', inside_obstacles]]
-
-
-def tear_check(cloth, most):
-    """The tear check a frame makes (solve.mark_overstretched over every edge, up to `most`
-    marked), on its own: the benchmark times it against whole frames. Returns how many edges
-    it marked."""
-    return mark_overstretched(cloth.pos, cloth.edge_a, cloth.edge_b, cloth.rest, cloth.n_edges,
-                              cloth.consts, most, cloth.tear_q, cloth.tear_e)
+            ['inside_obstacles', inside_obstacles], ['energies', energies]]
 
 
 def scene_limit():
-    """[the most bytes a scene may have (scene.MAX_SCENE_BYTES), the message past it]: every
+    """[the most bytes a scene may have (keys.MAX_SCENE_BYTES), the message past it]: every
     way a scene comes in checks it while reading, before parsing."""
     return [MAX_SCENE_BYTES, too_large()]
 
 
 def set_settings(cloth, keys_json_text):
-    """New settings for the running cloth, as the JSON text of an object of scene keys (those
-    of scene.SETTABLE: gravity, substeps, iterations, solver, damping, ...): what a `set`
-    action does (the page's session applies it to every panel: session.change). Positions,
-    velocities, pins and held vertices stay (sim.retune); bad keys change nothing."""
+    """New settings for the running cloth, as the JSON text of an object of scene keys: what a
+    `set` action does. Positions, velocities, pins and holds stay (step.retune); bad keys
+    change nothing."""
     parsed = parse_json(keys_json_text)
     if parsed is None:
         fail('scene: not valid JSON')
@@ -122,8 +131,7 @@ def positions_of(cloth):
 
 def apply_due(cloth, next_action, f):
     """The scene's actions from index `next_action` on that are due at frame f, applied;
-    returns the index of the first one not yet due (script.apply_due: the CLI's loop and the
-    benchmark's runs step through it)."""
+    returns the index of the first one not yet due (script.apply_due)."""
     return due(cloth, next_action, f)
 
 
@@ -171,11 +179,11 @@ def start(cloth, frames, with_trace):
 
 def result_of(cloth, frames):
     measure(cloth)
-    m = cloth.n_edges
+    m = cloth.n_struct
     return {
         'frames': frames,
         'edges': [[cloth.edge_a[e], cloth.edge_b[e]] for e in range(m)],
         'positions': positions_of(cloth),
-        'edge_diff': [cloth.diff[e] for e in range(m)],
+        'edge_value': [cloth.edge_value[e] for e in range(m)],
         'node_stress': [cloth.stress[k] for k in range(cloth.n_verts)],
     }

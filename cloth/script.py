@@ -2,7 +2,9 @@
 on a running cloth. The CLI's run, the page's panels and its session all go through these."""
 
 from cloth.scene import settings_scene
-from cloth.sim import grab, move, move_by, release, pin, unpin, retune, cut, move_obstacle
+from cloth.hands import grab, move, move_by, release, pin, unpin
+from cloth.step import retune, cut
+from cloth.obstacles import move_obstacle
 
 
 def apply_settings(cloth, keys, where):

@@ -18,8 +18,12 @@ frame, which is where `run` applies an action of frame f that comes after them i
 """
 
 from cloth.host import f64, i32, parse_json, has_key, copy_object, to_json
-from cloth.scene import parse_scene, MAX_ACTIONS, OPS, fail
-from cloth.sim import Cloth, grab, move, move_by, release, pin, unpin, cut, frame, move_obstacle
+from cloth.scene import parse_scene
+from cloth.keys import MAX_ACTIONS, OPS
+from cloth.values import fail
+from cloth.hands import grab, move, move_by, release, pin, unpin
+from cloth.step import new_cloth, cut, frame
+from cloth.obstacles import move_obstacle
 from cloth.script import apply_due, drop_actions_after, apply_settings
 
 
@@ -227,13 +231,13 @@ class Session:
         count = len(obj['compare']) if has_key(obj, 'compare') else 0
         self.panels = []
         if count == 0:
-            self.panels.append(Cloth(scene))
+            self.panels.append(new_cloth(scene))
             self.base = self.panels[0]
         else:
             for i in range(count):
-                self.panels.append(Cloth(parse_scene(text, i)))
+                self.panels.append(new_cloth(parse_scene(text, i)))
             # What the scene's own settings make, never stepped: the settings panel shows it.
-            self.base = Cloth(scene)
+            self.base = new_cloth(scene)
         self.n_panels = len(self.panels)
         n = scene.cols * scene.rows
         self.n_verts = n

@@ -30,7 +30,6 @@
   const FRAME_BUDGET_MS = 12;  // simulation time per animation frame at most (one frame always runs)
   const READOUT_MS = 250;      // readout refresh period
   const EMA = 0.1;             // smoothing of the timing readouts
-  const CAPPED_NOTE_MS = 3000; // the max_speed note is said at most this often
 
   const core = window.clothCore, scenes = window.clothScenes, runner = window.clothRunner;
   const params = window.clothParams, stage = window.clothStage;
@@ -39,8 +38,8 @@
   const own = window.clothOptions.own;
 
   // A panel: {cloth, run (runner.js: ops, script index, batch timing), draw (its renderer
-  // panel), snap (what the renderer reads of the cloth: clothCore.snapshot), simMs,
-  // clamped}. state.cloth is the first panel's: the one the readouts, the recording's checks
+  // panel), snap (what the renderer reads of the cloth: clothCore.snapshot), simMs}.
+  // state.cloth is the first panel's: the one the readouts, the recording's checks
   // and state() describe. state.base is a cloth that follows the scene's settings without the
   // panels' own (never stepped): what the settings panel shows.
   const state = {
@@ -56,7 +55,6 @@
     linkPending: false, // a link is being copied (the clipboard answers later)
     slowWork: 0,        // a frame's edge updates, where load() warned they are too many for real time
     relayouts: 0,       // how many times the views were laid out again (info(): the tests)
-    cappedAt: -Infinity, // when the max_speed note was last said (performance.now ms)
     replaying: false,   // a replay was playing when the last note about it was said
   };
   // The scene's panels, their scripts, the recording and the replay: clothCore.session (the
@@ -155,7 +153,7 @@
     sess = opened;
     state.panels = sess.panels.map(function (cloth, i) {
       return { cloth: cloth, run: runner.panel(sess, i), draw: renderer.ok ? renderer.panel(i) : null,
-               snap: core.snapshot(cloth), simMs: NaN, clamped: 0 };
+               snap: core.snapshot(cloth), simMs: NaN };
     });
     state.cloth = sess.panels[0];
     state.base = sess.base;
@@ -181,7 +179,7 @@
     // The pointers that kept a vertex hold it again, where it now is, keeping on with their
     // pointer from here (recorded as grabs, at frame 0 of the new recording).
     gestures.regrab();
-    state.panels.forEach(function (p) { p.cloth.measure(); });
+    state.panels.forEach(function (p) { p.run.ops.measure(); });
     state.needMeasure = false;
     state.dirty = true;
     ui.setPreset(preset);
@@ -190,6 +188,9 @@
     const work = scenes.workOf(obj) * Math.max(1, state.compare.length);
     state.slowWork = work > scenes.REAL_TIME_WORK ? work : 0;
     if (state.slowWork) ui.note(scenes.slowNote(state.slowWork));
+    // A scene made under an older model runs as a membrane: said, with what became of its keys.
+    const legacy = core.notes(state.cloth).legacy;
+    if (legacy) ui.note('This scene was ' + legacy);
     // A scene that starts its cloth inside an obstacle: pushed out at once, tangled.
     const inside = state.cloth.n_obstacles > 0 ? state.panels[0].run.ops.inside_obstacles() : 0;
     if (inside > 0) {
@@ -389,19 +390,9 @@
     scripted(sess.script_next[0] > from);
     for (let i = 0; i < state.panels.length; i++) {
       const p = state.panels[i];
-      p.cloth.measure();
+      p.run.ops.measure();
       const ms = p.cloth.asleep ? NaN : p.run.ms / done;
       p.simMs = Number.isFinite(p.simMs) && Number.isFinite(ms) ? p.simMs + EMA * (ms - p.simMs) : ms;
-      // The core's max_speed safety net engaged: said, with why (readouts.js), at most once every CAPPED_NOTE_MS: settings that cap every frame (a tiny max_speed)
-      // would otherwise hide every other note, a refused field's among them.
-      if (p.cloth.clamped > p.clamped) {
-        p.clamped = p.cloth.clamped;
-        const now = performance.now();
-        if (!(now - state.cappedAt < CAPPED_NOTE_MS)) {
-          state.cappedAt = now;
-          ui.note((state.panels.length > 1 ? 'Panel ' + (i + 1) + ': ' : '') + window.clothReadouts.cappedNote(p.cloth));
-        }
-      }
     }
     state.needMeasure = false;
     state.dirty = true;
@@ -420,7 +411,7 @@
   function render() {
     if (!state.cloth || !renderer.ok || renderer.lost) return;
     overlays.fade(gestures.count() > 0 && renderer.ok, heldPoints);
-    if (state.needMeasure) { state.panels.forEach(function (p) { p.cloth.measure(); }); state.needMeasure = false; }
+    if (state.needMeasure) { state.panels.forEach(function (p) { p.run.ops.measure(); }); state.needMeasure = false; }
     const t0 = performance.now();
     state.scale = window.clothReadouts.scaleOf(state.panels, state.mode, state.scaleMode, state.fullScale);
     renderer.begin();

@@ -40,7 +40,8 @@ window.clothCore = (function (api) {
     return { keys: keys, order: order, solvers: given[1].slice(), defaultSolver: given[2], ops: given[3].slice(),
              maxActions: given[4], maxPanels: given[5], maxVertices: given[6],
              sceneFields: given[7].map(function (f) { return { key: f[0], hint: f[1], axis: f[2], parts: f[3].slice() }; }),
-             solverLabels: given[8].slice(), seedSolver: given[9], handForce: given[10] };
+             solverLabels: given[8].slice(), seedSolver: given[9], handForce: given[10],
+             handRadius: given[11], model: given[12], restImbalance: given[13] };
   })();
 
   const core = {
@@ -54,39 +55,48 @@ window.clothCore = (function (api) {
     }),
     // load(sceneJsonText) -> a live Cloth (typed arrays, frame(), measure(), grab()...).
     load: wrap(function (text) { return api.load(text); }),
-    // unused(cloth) -> what of its settings its solver does not use, in words ('' for none).
-    unused: function (cloth) { return api.unused(cloth); },
-    // materials() -> {list: [[name, label, density kg/m^2, stiffness N/m], ...], preset: name}
-    // (cloth/scene.py MATERIALS: the Material control's fabrics, declared there once).
-    materials: function () { const m = api.materials(); return { list: m[0], preset: m[1] }; },
+    // notes(cloth) -> {unused: what of its settings its solver does not use, legacy: what
+    // running a scene of an older model under the membrane did} in words ('' for none).
+    notes: function (cloth) { const n = api.notes(cloth); return { unused: n[0], legacy: n[1] }; },
+    // fabrics() -> {list: [[name, label, stretch N/m, shear N/m, density kg/m^2, what], ...],
+    // preset: name} (cloth/fabrics.py: the Fabric menu's fabrics, declared there once).
+    fabrics: function () { const f = api.fabrics(); return { list: f[0], preset: f[1] }; },
+    // presets() -> [[name, label, cols, rows, size m], ...] (cloth/presets.py, in menu order);
+    // preset(name, cols, rows) -> {scene: the scene object, view: [x0, x1, y0, y1] or []}.
+    presets: function () { return api.presets(); },
+    preset: function (name, cols, rows) { const p = api.preset(name, cols, rows); return { scene: p[0], view: p[1] }; },
     // schema() -> the scene's keys and the limits the page checks against, declared once in
     // cloth/scene.py (KEYS) and read here (cloth/api.py schema): {keys: {name: {kind, min,
     // max, minOpen, words, label, unit, live, panel, fallback, bySolver, field: {min, max,
     // step, int}}}, order: [names], solvers, defaultSolver, ops, maxActions, maxPanels,
     // maxVertices, sceneFields: [{key, hint, axis, parts}] (the Scene section's number fields;
-    // a key of two numbers: parts, the Scene attributes that hold them, and axis, the field's), solverLabels (by solvers' index), seedSolver, handForce (a
-    // hand's most pull, in the cloth's weights)}. Made once; callers must not change it.
+    // a key of two numbers: parts, the Scene attributes that hold them, and axis, the field's),
+    // solverLabels (by solvers' index), seedSolver, handForce (a hand's most pull, N),
+    // handRadius (its grip, m), model (the one scenes run under), restImbalance (the most
+    // unbalanced force a cloth at rest has, over its weight)}. Made once; callers must not
+    // change it.
     schema: function () { return SCHEMA; },
-    // edgesOf(cols, rows, shear) -> how many edges such a grid has (cloth/sim.py count_edges).
-    edgesOf: function (cols, rows, shear) { return api.edges_of(cols, rows, shear); },
+    // edgesOf(cols, rows) -> [structural edges, all edges] of such a grid (cloth/topology.py).
+    edgesOf: function (cols, rows) { return api.edges_of(cols, rows); },
     // sceneLimit() -> {bytes, message}: the most bytes any scene may have and what to say past
     // it (cloth/scene.py MAX_SCENE_BYTES).
     sceneLimit: function () { const l = api.scene_limit(); return { bytes: l[0], message: l[1] }; },
     message: message,
   };
-  // What the renderer draws of a cloth, and all it reads: positions, the edges' ends, one
-  // value per edge (its strain, `diff`) and per vertex (its stress), and the markers' flags.
+  // What the renderer draws of a cloth, and all it reads: positions, the structural edges'
+  // ends, one value per edge (what the colours show: cloth/measure.py) and per vertex (the
+  // seed's node stress), and the markers' flags.
   // Views of the core's own arrays, put into `out` (made once per panel: no allocation a
   // frame) before each draw; a worker hosting the core would post these arrays instead.
   core.snapshot = function (cloth, out) {
     out = out || {};
-    out.n_edges = cloth.n_edges;
+    out.n_edges = cloth.n_struct;
     out.n_verts = cloth.n_verts;
     out.spacing = cloth.spacing;
     out.pos = cloth.pos;
     out.edge_a = cloth.edge_a;
     out.edge_b = cloth.edge_b;
-    out.edge_value = cloth.diff;
+    out.edge_value = cloth.edge_value;
     out.vertex_value = cloth.stress;
     out.pinned = cloth.pinned;
     out.held = cloth.held;
@@ -113,7 +123,7 @@ window.clothCore = (function (api) {
     core.session[entry[0]] = THROWS[entry[0]] ? wrap(entry[1]) : entry[1];
   });
 
-  // ops(cloth): the per-frame operations (cloth/api.py operations: cloth/sim.py's module
+  // ops(cloth): the per-frame operations (cloth/api.py operations: the core's module
   // functions) as closures over one cloth, made once per scene. Errors stay Transcrypt's here;
   // callers that need messages use core.message(e).
   const OPERATIONS = api.operations();

@@ -1,5 +1,5 @@
-// The settings the panel shows (params: the Scene section's fields, cloth/scene.py
-// SCENE_FIELDS, and the solver and material): read from a cloth's scene, written into a
+// The settings the panel shows (params: the Scene section's fields, cloth/keys.py
+// SCENE_FIELDS, and the solver and fabric): read from a cloth's scene, written into a
 // scene object, and the scene keys a change of them sets; and the page's limits for a scene
 // and its panels. Pure: data in, data out (the app applies them through the session).
 'use strict';
@@ -10,7 +10,7 @@ window.clothParams = (function () {
 
   // The params as a cloth's scene has them now (the scene it runs, settings set live included).
   function of(scene) {
-    const p = { solver: scene.solver, material: scenes.materialOf(scene.density, scene.compliance) };
+    const p = { solver: scene.solver, material: scenes.materialOf(scene.stretch, scene.shear, scene.density) };
     scenes.SCENE_FIELDS.forEach(function (key) { p[key] = scenes.fieldOf(scene, key); });
     return p;
   }
@@ -29,8 +29,9 @@ window.clothParams = (function () {
     });
     if (p.solver !== was.solver) keys.solver = p.solver;
     if (p.material !== was.material && own(scenes.MATERIALS, p.material)) {
+      keys.stretch = scenes.MATERIALS[p.material].stretch;
+      keys.shear = scenes.MATERIALS[p.material].shear;
       keys.density = scenes.MATERIALS[p.material].density;
-      keys.compliance = scenes.MATERIALS[p.material].compliance;
     }
     return keys;
   }

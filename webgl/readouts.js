@@ -1,23 +1,26 @@
-// What the page says in numbers: the colour scale a frame is drawn with, the readouts under
-// the cloth, the compare panels' labels, and the words for the core's speed cap. Reads the
-// app's state (its panels' measures and timings); writes only through the UI.
+// What the page says in numbers: the colour scale a frame is drawn with, the legend (what the
+// colours are, of which fabric, and how well the solver has balanced its forces), the readouts
+// under the cloth and the compare panels' labels. Reads the app's state (its panels' measures
+// and timings); writes only through the UI.
 'use strict';
 
 window.clothReadouts = (function () {
-  // Auto is the seed's normalisation by the frame's maximum, above a floor: solver noise on an
-  // inextensible cloth at rest (1e-7 on a curtain, up to 1e-3 in a slack hang's rows) stays
-  // dark, while a material's own strain (jersey hung 1.5 m: 0.6% at the rod) fills the scale
-  // from the hem to the pins. One scale for every panel: the largest of them, so a colour
-  // means one strain everywhere.
-  const AUTO_FLOOR = 0.002;
+  // Auto: in the stress mode the seed's normalisation by the frame's maximum; in the strain
+  // mode the value 99% of the edges are at or below (cloth/measure.py HIGH_SHARE: where a clamp
+  // ends the strain peaks more the finer the grid, and a scale by the largest would darken the
+  // rest of the cloth with it). Above a floor: a stiff fabric's own strain (cotton hung 1 m:
+  // 0.03% at the rod) still fills the scale, a cloth that does not pull at all stays dark. One
+  // scale for every panel: the largest of them, so a colour means one strain everywhere.
+  const AUTO_FLOOR = 1e-4;
   const SLOW_MOTION = 0.9;     // below this share of real time, the readout says "slow motion"
 
-  // The largest edge |diff| (strain mode) or node stress (stress mode) over the panels.
+  // The top of the scale over the panels: the edges' high value (strain mode) or the largest
+  // node stress (stress mode).
   function frameMax(panels, mode) {
     let top = 0;
     for (let i = 0; i < panels.length; i++) {
       const c = panels[i].cloth;
-      const v = mode === 'stress' ? c.max_stress : c.max_diff;
+      const v = mode === 'stress' ? c.max_stress : c.high_value;
       if (v > top) top = v;
     }
     return top;
@@ -29,19 +32,25 @@ window.clothReadouts = (function () {
     return Math.max(frameMax(panels, mode), AUTO_FLOOR);
   }
 
-  // The core's max_speed safety net engaged: say why. A hand that moved faster than the cloth
-  // can follow (metres in a frame), or settings that pump energy (one sweep per step on an
-  // undamped grid; damping does not cure it: measured, 1.8 million capped vertex-steps with
-  // damping 1).
-  const DEFAULT_MAX_SPEED = window.clothCore.schema().keys.max_speed.fallback;
-  function cappedNote(cloth) {
-    const speed = cloth.scene.max_speed, own = speed < DEFAULT_MAX_SPEED;
-    const capped = 'speeds were capped at ' + (own ? 'the scene\'s max_speed of ' : 'max_speed, ') + speed + ' m/s';
-    if (cloth.n_held > 0) return 'A very fast drag: ' + capped + ' (the hand moved faster than the cloth can follow)';
-    if (own) return capped.charAt(0).toUpperCase() + capped.slice(1);
-    return 'Unstable settings: ' + capped + '; use more iterations or substeps' +
-      (cloth.use_xpbd ? '' : ', or the default solver');
+  // The legend's words for the first panel: what an edge's colour is (the membrane's tension
+  // strain, or the seed's |diff|; cloth/measure.py), the fabric, and how far the solver's last
+  // step left its forces from balance (cloth/vbd.py `imbalance`: the RMS unbalanced force over
+  // the RMS weight of a vertex): at rest and balanced within the core's rest bound
+  // (cloth/sleep.py SLEEP_IMBALANCE), the colours are the fabric's strain field (the field
+  // then matches the exact statics within a few per cent: `python -m bench`).
+  function legendOf(cloth, mode) {
+    const core = window.clothCore, seed = cloth.scene.solver === core.schema().seedSolver;
+    const what = mode === 'stress' ? 'node stress Q' : seed ? 'edge |diff|' : 'tension strain';
+    if (seed) return { name: what, note: 'the seed\'s rigid edges' };
+    const s = window.clothScenes, name = s.materialOf(cloth.scene.stretch, cloth.scene.shear, cloth.scene.density);
+    const fabric = name === 'custom' ? cloth.scene.stretch + ' N/m' : s.MATERIALS[name].label.split(' (')[0].toLowerCase();
+    const off = cloth.imbalance;
+    const balance = !(off > 0) ? 'balanced' : off <= core.schema().restImbalance ? 'balanced to ' + fmtPct(off)
+      : 'settling: ' + fmtPct(off) + ' off balance';
+    return { name: what, note: fabric + ' · ' + balance };
   }
+
+  function fmtPct(v) { return window.clothUI.fmt(100 * v, 2) + '%'; }
 
   function fmt(v) { return window.clothUI.fmt(v, 4); }
 
@@ -61,8 +70,10 @@ window.clothReadouts = (function () {
           (state.panels.length > 1 ? ' · ' + state.panels.length + ' panels' : '') + (asleep ? ' · at rest' : '') +
           (slow ? ' · slow motion ×' + state.speed.toFixed(2) : ''),
       });
+      const legend = legendOf(c, state.mode);
       ui.setLegend(state.scale, state.scaleMode === 'fixed' ? 'fixed'
-        : (frameMax(state.panels, state.mode) > AUTO_FLOOR ? 'max' : 'floor'));
+        : frameMax(state.panels, state.mode) <= AUTO_FLOOR ? 'floor' : state.mode === 'stress' ? 'max' : 'high',
+        legend.name, legend.note);
       if (state.panels.length > 1) {
         state.panels.forEach(function (p, i) {
           // A narrow panel (a phone, four panels) gets the short label: the solver and its
@@ -81,5 +92,5 @@ window.clothReadouts = (function () {
     return { show: show };
   }
 
-  return { AUTO_FLOOR: AUTO_FLOOR, scaleOf: scaleOf, cappedNote: cappedNote, create: create };
+  return { AUTO_FLOOR: AUTO_FLOOR, scaleOf: scaleOf, legendOf: legendOf, create: create };
 })();

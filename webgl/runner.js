@@ -5,7 +5,7 @@
 //
 // A run is {cloth, ops, next, frame, ms, proj}: a cloth, its operations (clothCore.ops),
 // the index of its scene's next scripted action, the frames it has run, and the time and
-// constraint projections of its last batch. A batch is timed as a whole with
+// sweeps of its last batch. A batch is timed as a whole with
 // performance.now() (its resolution is 100 us on file://; per-frame timings would be noise).
 'use strict';
 
@@ -20,10 +20,11 @@ window.clothRunner = (function () {
 
   // Run up to `frames` frames of run r, each followed by the scene's actions of that frame
   // (cloth/api.py simulate); with a budget (ms) stop once it is spent, after at least one.
-  // Returns the frames done; r.ms and r.proj hold the batch's time and projections.
+  // Returns the frames done; r.ms and r.proj hold the batch's time and its sweeps (the
+  // solver's passes over the cloth: a machine-independent cost).
   function step(r, frames, budgetMs) {
     const cloth = r.cloth, ops = r.ops, scripted = cloth.scene.actions.length;
-    const p0 = cloth.projections;
+    const p0 = cloth.sweeps;
     const t0 = performance.now();
     let done = 0;
     while (done < frames) {
@@ -34,7 +35,7 @@ window.clothRunner = (function () {
       if (budgetMs > 0 && performance.now() - t0 > budgetMs) break;
     }
     r.ms = performance.now() - t0;
-    r.proj = cloth.projections - p0;
+    r.proj = cloth.sweeps - p0;
     return done;
   }
 
@@ -51,7 +52,7 @@ window.clothRunner = (function () {
   // has run them (clothCore.session.framesRan).
   function stepPanel(r, session, i, frames, budgetMs) {
     const stepOne = core.session.stepPanel, cloth = r.cloth;
-    const p0 = cloth.projections;
+    const p0 = cloth.sweeps;
     const t0 = performance.now();
     let done = 0;
     while (done < frames) {
@@ -61,33 +62,34 @@ window.clothRunner = (function () {
     }
     r.frame += done;
     r.ms = performance.now() - t0;
-    r.proj = cloth.projections - p0;
+    r.proj = cloth.sweeps - p0;
     return done;
   }
 
   // What a cloth is running, as the benchmark's tables and the compare panels say it.
   function describe(cl) {
-    return { solver: cl.scene.solver, substeps: cl.substeps,
-             iterations: cl.iterations, tethers: !!cl.use_tethers, tolerance: cl.tolerance,
-             shear: !!cl.scene.shear, compliance: cl.scene.compliance, sleep: !!cl.use_sleep,
-             cells: !!cl.use_cells, lines: !!cl.use_lines, damping: cl.scene.damping,
-             tear: cl.tear, n_verts: cl.n_verts, n_edges: cl.n_edges };
+    return { solver: cl.scene.solver, substeps: cl.substeps, iterations: cl.iterations,
+             corrections: cl.corrections, stretch: cl.scene.stretch, shear: cl.scene.shear,
+             density: cl.scene.density, sleep: !!cl.scene.sleep, damping: cl.scene.damping,
+             tear: cl.scene.tear, n_verts: cl.n_verts, n_edges: cl.n_edges };
   }
 
-  // 'xpbd S8 x 1': the solver and its steps (a narrow compare panel's label).
-  function headline(cl) { return cl.scene.solver + ' S' + cl.substeps + ' x ' + cl.iterations; }
+  // 'vbd S1 x 5 +1': the solver and its budget, substeps x iterations (+ corrections), for a
+  // narrow compare panel's label.
+  function headline(cl) {
+    return cl.scene.solver + ' S' + cl.substeps + ' x ' + cl.iterations +
+      (cl.corrections > 0 && cl.scene.solver === core.schema().defaultSolver ? ' +' + cl.corrections : '');
+  }
 
-  // 'xpbd S8 x 1, tethers, cells, lines, tol 0.0001' (the benchmark's setting column).
+  // 'vbd S1 x 5 +1, jersey' or '..., 500/50 N/m 0.2 kg/m²' (the benchmark's setting column):
+  // the fabric only where the solver honours it.
   function label(cl) {
     const d = describe(cl);
     const parts = [headline(cl)];
-    if (d.tethers) parts.push('tethers');
-    if (d.cells) parts.push('cells');
-    if (d.lines) parts.push('lines');
-    if (d.shear) parts.push('shear');
-    // The seed's method ignores compliance: only a solver that honours it says it.
-    if (d.compliance > 0 && cl.use_xpbd) parts.push('compliance ' + d.compliance);
-    if (d.tolerance > 0) parts.push('tol ' + d.tolerance);
+    if (cl.scene.solver !== core.schema().seedSolver) {
+      const name = window.clothScenes ? window.clothScenes.materialOf(d.stretch, d.shear, d.density) : 'custom';
+      parts.push(name !== 'custom' ? name : d.stretch + '/' + d.shear + ' N/m ' + d.density + ' kg/m\u00b2');
+    }
     if (d.tear > 0) parts.push('tear ' + d.tear);
     return parts.join(', ');
   }

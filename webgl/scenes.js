@@ -57,28 +57,24 @@ window.clothScenes = (function () {
     SOLVERS[name] = { label: SCHEMA.solverLabels[i], substeps: SCHEMA.keys.substeps.bySolver[i],
                       iterations: SCHEMA.keys.iterations.bySolver[i] };
   });
-  // The Material control's fabrics (cloth/scene.py MATERIALS): name -> {label, density kg/m^2,
-  // stiffness N/m, compliance m/N}. The presets hang in the core's preset fabric (jersey),
-  // whose stretch under its own weight is visible in the colours.
+  // The Material control's fabrics (cloth/fabrics.py FABRICS): name -> {label, stretch N/m,
+  // shear N/m, density kg/m^2, what}. The presets hang in the core's preset fabric.
   const MATERIALS = {};
-  const fabrics = window.clothCore.materials();
-  fabrics.list.forEach(function (m) {
-    MATERIALS[m[0]] = { label: m[1], density: m[2], stiffness: m[3], compliance: m[3] > 0 ? 1 / m[3] : 0 };
+  const fabrics = window.clothCore.fabrics();
+  fabrics.list.forEach(function (f) {
+    MATERIALS[f[0]] = { label: f[1], stretch: f[2], shear: f[3], density: f[4], what: f[5] };
   });
-  // The presets start with the core's default solver and its steps. Damping 1/s, still air's:
-  // a released cloth comes to rest within a few seconds, as fabric does (its velocity loses
-  // 1/s of itself per second); the core's default, 0, swings for minutes.
+  // A panel starts with the core's default solver and its steps; a preset's own settings
+  // (its damping, tearing, wind) come from its scene (cloth/presets.py).
   const DEFAULT_PARAMS = { solver: SCHEMA.defaultSolver, substeps: SOLVERS[SCHEMA.defaultSolver].substeps,
                            iterations: SOLVERS[SCHEMA.defaultSolver].iterations,
                            damping: 1, tear: 0, material: fabrics.preset };
 
-  // The named fabric a scene's density and compliance are, or 'custom' (a scene of its own,
-  // or one without a density: every vertex 1 kg, as scenes were before materials).
-  function materialOf(density, compliance) {
+  // The named fabric a scene's stretch, shear and density are, or 'custom' (a scene's own).
+  function materialOf(stretch, shear, density) {
     for (const name in MATERIALS) {
-      if (own(MATERIALS, name) && MATERIALS[name].density === density && MATERIALS[name].compliance === compliance) {
-        return name;
-      }
+      const f = MATERIALS[name];
+      if (own(MATERIALS, name) && f.stretch === stretch && f.shear === shear && f.density === density) return name;
     }
     return 'custom';
   }
@@ -115,7 +111,7 @@ window.clothScenes = (function () {
 
   // The scene object `obj` with the panel's settings p written in: the live Scene-section
   // fields (those that are not live make the grid, and the caller writes them), the solver
-  // and the material's density and stiffness.
+  // and the fabric's three numbers.
   function writeParams(obj, p) {
     SCENE_FIELDS.forEach(function (key) {
       if (!SCHEMA.keys[key].live) return;
@@ -125,135 +121,42 @@ window.clothScenes = (function () {
     });
     obj.solver = p.solver;
     if (own(MATERIALS, p.material)) {
+      obj.stretch = MATERIALS[p.material].stretch;
+      obj.shear = MATERIALS[p.material].shear;
       obj.density = MATERIALS[p.material].density;
-      obj.compliance = MATERIALS[p.material].compliance;
     }
     return obj;
   }
 
-  function topRow(cols, every) {
-    const pins = [];
-    for (let c = 0; c < cols; c += every) pins.push(c);
-    if (pins[pins.length - 1] !== cols - 1) pins.push(cols - 1);
-    return pins;
-  }
+  // The presets (cloth/presets.py, in menu order): name -> {label, params: {cols, rows}}.
+  // Their scenes are the core's, a function of the grid (make).
+  const PRESETS = {};
+  window.clothCore.presets().forEach(function (p) {
+    PRESETS[p[0]] = { label: p[1], params: { cols: p[2], rows: p[3] } };
+  });
 
-  // size: the cloth's larger side in metres; the spacing follows from the grid.
-  const CARRY_FRAMES = 60;   // the Two corners preset carries its corner in over 1 s
-  const PRESETS = {
-    // Hung from a rod: every vertex of the top row pinned, so the strain is the curtain's own
-    // (zero at the hem, growing to density g height / stiffness at the rod) at every grid
-    // size. Pins a few columns apart at the rest spacing made a top row that must carry the
-    // columns while straight: an inextensible cloth has no equilibrium there, and the colours
-    // showed how far the solver got.
-    curtain: {
-      label: 'Curtain',
-      params: { cols: 40, rows: 30 },
-      size: 2.0,
-      pins: function (cols) { return topRow(cols, 1); },
-    },
-    // Inextensible: its exact hang is known (cloth/reference.py), and the default meets it. A
-    // material hung from two points is not yet something the solver does well: a grid of
-    // structural edges carries the whole weight in its top row (no shear stiffness spreads it
-    // into the rows below), whose strain then grows as the grid refines and whose line solves
-    // keep a limit cycle (the README's "Known limits", measured by the strain table of
-    // `python -m bench --physics`).
-    corners: {
-      label: 'Two corners',
-      params: { cols: 30, rows: 30, material: 'inextensible' },
-      size: 1.6,
-      pins: function (cols) { return cols > 1 ? [0, cols - 1] : [0]; },
-      // Slack: the right corner is carried in to 80% of the width over the first second (a
-      // smooth start and stop) and pinned there, so the cloth hangs with its top row sagging
-      // (the scene where shape shows). Carried, not put there at frame 0: a corner moved there
-      // in one frame flings the cloth (`python -m bench --figures`, the corner table).
-      actions: function (cols, rows, spacing) {
-        if (cols < 2) return [];
-        const k = cols - 1, x0 = (cols - 1) * spacing, x1 = 0.8 * x0, frames = CARRY_FRAMES;
-        const out = [{ frame: 0, op: 'grab', vertex: k, to: [x0, 0] }];
-        for (let f = 1; f <= frames; f++) {
-          const t = 0.5 - 0.5 * Math.cos(Math.PI * f / frames);
-          out.push({ frame: f, op: 'move', vertex: k, to: [x0 + (x1 - x0) * t, 0] });
-        }
-        out.push({ frame: frames, op: 'pin', vertex: k }, { frame: frames, op: 'release', vertex: k });
-        return out;
-      },
-      sag: 0.6,
-    },
-    chain: {
-      label: 'Chain',
-      params: { cols: 40, rows: 1 },
-      size: 1.6,
-      pins: function () { return [0]; },
-      // A pendulum: it swings through the half-disc below its pin.
-      view: function (w, h) { const r = w + h; return { x0: -r, x1: r, y0: -r, y1: 0.15 * r }; },
-    },
-    // Hung from a rod too: five point pins at the rest spacing made a top row that an
-    // inextensible cloth cannot hang from (it never came to rest: 0.5 m/s after 10 s) and
-    // concentrated a jersey's load in the links at each pin (35% strain, growing with the grid).
-    large: {
-      label: 'Large cloth',
-      params: { cols: 100, rows: 100 },
-      size: 2.0,
-      pins: function (cols) { return topRow(cols, 1); },
-    },
-    // Made to be torn: pull a vertex well past where the cloth can reach (its edges break
-    // past 30% strain), or cut it (Alt+drag, or the Cut tool).
-    tearable: {
-      label: 'Tearable',
-      params: { cols: 60, rows: 40, tear: 0.3 },
-      size: 2.0,
-      pins: function (cols) { return topRow(cols, 1); },
-    },
-    // A towel over a peg, seen from its side: a strip dropped on a round peg (an obstacle with
-    // friction) drapes over it in two hanging halves. Drag the peg (or the towel) about.
-    peg: {
-      label: 'Towel on a peg',
-      params: { cols: 60, rows: 3 },
-      size: 2.0,
-      pins: function () { return []; },
-      // The peg at least a spacing in radius: a thinner one fits between two vertices, and a
-      // coarse towel (10 columns) slid off it through the edge over it (measured: free fall).
-      keys: function (cols, rows, spacing) {
-        const w = (cols - 1) * spacing;
-        return { obstacles: [{ circle: [0.5 * w, -0.35 * w, Math.max(0.04 * w, spacing)], friction: 0.6 }] };
-      },
-      view: function (w) { return { x0: 0.2 * w, x1: 0.8 * w, y0: -0.95 * w, y1: 0.05 * w }; },
-    },
-    // A flag on its pole (the left column pinned) in a gusty wind from the left.
-    flag: {
-      label: 'Flag in the wind',
-      params: { cols: 45, rows: 30, wind: 10 },
-      size: 1.8,
-      pins: function (cols, rows) {
-        const pins = [];
-        for (let r = 0; r < rows; r++) pins.push(r * cols);
-        return pins;
-      },
-      // Shear edges: a flag holds its shape (without them, each row hangs from its own pin and
-      // the cloth shears flat along the pole).
-      keys: function () { return { shear: true, drag: 0.4, gust: [0.5, 1.7] }; },
-      view: function (w, h) { return { x0: -0.15 * w, x1: 1.15 * w, y0: -h - 0.6 * w, y1: 0.1 * w }; },
-    },
-  };
-
-  function spacingFor(preset, cols, rows) {
-    const cells = Math.max(cols - 1, rows - 1, 1);
-    return preset.size / cells;
+  // The panel's settings a preset starts with: the page's defaults, then the preset's grid
+  // and what its scene sets of the Scene section's fields and the fabric.
+  function defaults(name) {
+    if (!own(PRESETS, name)) throw new Error('unknown preset: ' + name);
+    const p = Object.assign({}, DEFAULT_PARAMS, PRESETS[name].params);
+    const obj = window.clothCore.preset(name, p.cols, p.rows).scene;
+    SCENE_FIELDS.forEach(function (key) {
+      if (!SCHEMA.keys[key].live || !own(obj, key)) return;
+      p[key] = pair(key) ? obj[key][AXIS[key]] : (obj[key] === null ? 0 : obj[key]);
+    });
+    p.material = materialOf(obj.stretch, obj.shear, obj.density);
+    return p;
   }
 
   // Returns {scene, view}; params must already be clamped.
   function make(name, params) {
-    const preset = own(PRESETS, name) ? PRESETS[name] : null;
-    if (!preset) throw new Error('unknown preset: ' + name);
-    const p = Object.assign({}, DEFAULT_PARAMS, preset.params, params || {});
-    const spacing = spacingFor(preset, p.cols, p.rows);
-    const scene = writeParams({ cols: p.cols, rows: p.rows, spacing: spacing, pins: preset.pins(p.cols, p.rows),
-                                dt: SCHEMA.keys.dt.fallback }, p);
-    if (preset.actions) scene.actions = preset.actions(p.cols, p.rows, spacing);
-    if (preset.keys) Object.assign(scene, preset.keys(p.cols, p.rows, spacing));
-    const w = (p.cols - 1) * spacing, h = (p.rows - 1) * spacing;
-    const view = preset.view ? preset.view(w, h) : viewFor(scene, preset.sag);
+    if (!own(PRESETS, name)) throw new Error('unknown preset: ' + name);
+    const p = Object.assign({}, defaults(name), params || {});
+    const made = window.clothCore.preset(name, p.cols, p.rows);
+    const scene = writeParams(made.scene, p);
+    const view = made.view.length === 4 ? { x0: made.view[0], x1: made.view[1], y0: made.view[2], y1: made.view[3] }
+      : viewFor(scene);
     return { scene: scene, view: view };
   }
 
@@ -288,9 +191,11 @@ window.clothScenes = (function () {
   // a frame is one task that cannot be split, so a scene beyond these would stop the page
   // answering a person (1000x1000 took 25-40 s a frame). The CLI has its own, larger limits.
   const PAGE_LIMITS = { vertices: LIMITS.cols.max * LIMITS.rows.max, work: 4e6 };
-  // A frame's work estimated before loading, in edge updates: per step the sweeps, plus, where
-  // they run, tethers, cells and line solves (about 6 per vertex, measured by projections).
-  // Above REAL_TIME_WORK a frame takes more than its 1/60 s on an ordinary machine.
+  // A frame's work estimated before loading, in edge updates (an edge's force and stiffness
+  // worked out once): per step, the seed's sweeps over the structural edges; XPBD's over all;
+  // a vertex-descent sweep reaches each edge from both ends, and a coarse correction costs
+  // about eight passes over the edges (assembly, the Galerkin products amortised, the line
+  // search). Above REAL_TIME_WORK a frame takes more than its 1/60 s on an ordinary machine.
   const REAL_TIME_WORK = 1e6;
   function slowNote(work) {
     return 'This scene needs about ' + work.toExponential(1) + ' edge updates a frame: ' +
@@ -298,18 +203,17 @@ window.clothScenes = (function () {
   }
 
   function workOf(scene) {
-    const cols = scene.cols | 0, rows = scene.rows | 0;
+    const cols = Math.max(scene.cols | 0, 1), rows = Math.max(scene.rows | 0, 1);
     const solver = own(SOLVERS, scene.solver) ? scene.solver : SCHEMA.defaultSolver;
-    const d = SOLVERS[solver];
-    const substeps = Number.isFinite(scene.substeps) ? scene.substeps : d.substeps;
-    const iterations = Number.isFinite(scene.iterations) ? scene.iterations : d.iterations;
-    const n = cols * rows;
-    const m = window.clothCore.edgesOf(Math.max(cols, 1), Math.max(rows, 1), scene.shear === true);
     const index = SCHEMA.solvers.indexOf(solver);
-    const extras = ['tethers', 'cells', 'lines'].some(function (key) {
-      return typeof scene[key] === 'boolean' ? scene[key] : SCHEMA.keys[key].bySolver[index];
-    });
-    return substeps * (Math.max(iterations, 0) * m + (extras ? 6 * n : 0));
+    function budget(key) {
+      return Number.isFinite(scene[key]) ? Math.max(scene[key], 0) : SCHEMA.keys[key].bySolver[index];
+    }
+    const edges = window.clothCore.edgesOf(cols, rows);
+    const substeps = budget('substeps'), iterations = budget('iterations');
+    if (solver === SCHEMA.seedSolver) return substeps * iterations * edges[0];
+    if (solver === SCHEMA.defaultSolver) return substeps * (2 * iterations + 8 * budget('corrections')) * edges[1];
+    return substeps * iterations * edges[1];
   }
 
   // '' when the page can run the scene object; otherwise why not, in one sentence.
@@ -355,11 +259,6 @@ window.clothScenes = (function () {
     if (v < lim.min) { v = lim.min; notes.push(lim.label + ' clamped to its minimum ' + v); }
     if (v > lim.max) { v = lim.max; notes.push(lim.label + ' clamped to its maximum ' + v); }
     return { value: v, note: notes.join('; ') };
-  }
-
-  function defaults(name) {
-    if (!own(PRESETS, name)) throw new Error('unknown preset: ' + name);
-    return Object.assign({}, DEFAULT_PARAMS, PRESETS[name].params);
   }
 
   return { SCENE_FIELDS: SCENE_FIELDS, fieldOf: fieldOf, fieldValue: fieldValue, otherOf: other, writeParams: writeParams,

@@ -48,8 +48,8 @@ window.clothSettings = (function () {
       retune(Object.assign({}, state.params, { solver: name, substeps: d.substeps, iterations: d.iterations }), '');
     }
 
-    // A named fabric: its density and stiffness, set like every setting (recorded as a `set` of
-    // density and compliance).
+    // A named fabric: its stretch, shear and density, set like every setting (recorded as a
+    // `set` of the three).
     function setMaterial(name) {
       if (!own(scenes.MATERIALS, name)) { ui.setParams(state.params); return; }
       retune(Object.assign({}, state.params, { material: name }), '');
@@ -78,8 +78,8 @@ window.clothSettings = (function () {
         obj.compare = state.compare;
         note = (note ? note + '; ' : '') + 'set in every panel, over the panels\' own values (the compare editor shows what each runs)';
       }
-      // A Solver or Material change that leaves a material unused says so (cloth/scene.py).
-      const unused = keys.solver !== undefined || keys.compliance !== undefined ? core.unused(state.base) : '';
+      // A Solver or Material change that leaves the fabric unused says so (cloth/scene.py).
+      const unused = keys.solver !== undefined || keys.stretch !== undefined ? core.notes(state.base).unused : '';
       if (unused) note = (note ? note + '; ' : '') + unused.charAt(0).toUpperCase() + unused.slice(1);
       app.retuned(obj);
       ui.clearError('setting');     // a refused setting's banner ends with one that applies

@@ -20,7 +20,7 @@ window.clothUI = (function () {
   }
 
   const TEXT_INPUTS = { text: 1, number: 1, search: 1, email: 1, url: 1, tel: 1, password: 1 };
-  const LEGEND_TOP = { max: '(top: max)', floor: '(top: floor)', fixed: '(top: fixed)' };
+  const LEGEND_TOP = { max: '(top: max)', high: '(top: 99% of edges)', floor: '(top: floor)', fixed: '(top: fixed)' };
   const ARROWS = { ArrowLeft: 1, ArrowRight: 1, ArrowUp: 1, ArrowDown: 1 };
 
   // Does the focused element use this key itself (see the keydown handler)?
@@ -61,7 +61,7 @@ window.clothUI = (function () {
       banner: $('banner'), bannerText: $('banner-text'), bannerClose: $('banner-close'),
       fatal: $('fatal'), helpBox: $('help'), helpClose: $('help-close'),
       json: $('scene-json'), jsonBox: $('json-box'), loadJson: $('btn-load-json'), showJson: $('btn-show-json'),
-      paused: $('r-paused'), legend: $('legend'), legendTitle: $('legend-title'),
+      paused: $('r-paused'), legend: $('legend'), legendTitle: $('legend-title'), legendNote: $('legend-note'),
       legendLo: $('legend-lo'), legendMid: $('legend-mid'), legendHi: $('legend-hi'),
       sim: $('r-sim'), render: $('r-render'), fps: $('r-fps'), rms: $('r-rms'), max: $('r-max'), size: $('r-size'),
       recStatus: $('rec-status'), replay: $('r-replay'), replayFrame: $('r-replay-frame'), replayEnd: $('r-replay-end'),
@@ -82,7 +82,6 @@ window.clothUI = (function () {
     });
     let noteTimer = 0;
     let errorAbout = '';   // what the shown error is about (error, clearError)
-    let legendName = 'edge |diff|';
     let helpReturn = null;
     let helpOpen = false;   // the help is shown (modal)
     // A button clicked with a pointer gives focus back to the page, so that Space and the
@@ -125,8 +124,8 @@ window.clothUI = (function () {
     const names = Object.keys(PRESETS).map(function (n) { return PRESETS[n].label.toLowerCase(); });
     const facts = {
       defaultSubsteps: SOLVERS[SCHEMA.defaultSolver].substeps, seedIterations: SOLVERS[SCHEMA.seedSolver].iterations,
-      presetFabric: window.clothScenes.MATERIALS[window.clothCore.materials().preset].label.toLowerCase(),
-      handForce: SCHEMA.handForce, presetCount: names.length, presetNames: names.join(', '), maxPanels: SCHEMA.maxPanels,
+      presetFabric: window.clothScenes.MATERIALS[window.clothCore.fabrics().preset].label.toLowerCase(),
+      handForce: SCHEMA.handForce, handRadius: 100 * SCHEMA.handRadius, presetCount: names.length, presetNames: names.join(', '), maxPanels: SCHEMA.maxPanels,
     };
     document.querySelectorAll('[data-fact]').forEach(function (node) { node.textContent = String(facts[node.dataset.fact]); });
     $('solver').addEventListener('change', function () { h.solver($('solver').value); });
@@ -137,15 +136,14 @@ window.clothUI = (function () {
       const o = document.createElement('option');
       o.value = name;
       o.textContent = m.label;
-      o.title = m.density + ' kg/m², ' + (m.stiffness > 0 ? m.stiffness + ' N/m' : 'does not stretch');
+      o.title = m.stretch + ' N/m stretch, ' + m.shear + ' N/m shear, ' + m.density + ' kg/m²';
       $('material').appendChild(o);
       const row = document.createElement('tr');
       const what = document.createElement('td');
       const th = document.createElement('th');
       th.textContent = m.label;
-      what.textContent = m.density + ' kg/m²; ' + (m.stiffness > 0
-        ? 'stretch stiffness ' + m.stiffness + ' N/m (compliance ' + m.compliance + ' m/N)'
-        : 'no stretch (compliance 0)');
+      what.textContent = m.what + ': stretch ' + m.stretch + ' N/m, shear ' + m.shear + ' N/m, ' +
+        m.density + ' kg/m²';
       row.appendChild(th);
       row.appendChild(what);
       $('help-materials').appendChild(row);
@@ -272,18 +270,18 @@ window.clothUI = (function () {
       setMode: function (mode) {
         checkRadio('mode', mode);
         el.legend.classList.toggle('stress', mode === 'stress');
-        legendName = mode === 'stress' ? 'node stress Q' : 'edge |diff|';
-        el.legendTitle.textContent = legendName;
       },
       setScale: function (scaleMode, fullScale) {
         checkRadio('scale', scaleMode);
         el.fullScale.value = String(fullScale);
         el.fullScale.disabled = scaleMode !== 'fixed';
       },
-      // Ticks in the quantity the title names; the title says what the scale's top is:
-      // the frame's maximum, the auto floor, or the fixed full scale.
-      setLegend: function (scale, top) {
-        el.legendTitle.textContent = legendName + ' ' + LEGEND_TOP[top];
+      // Ticks in the quantity the title names; the title says what the colours are, what the
+      // scale's top is (the frame's maximum, the auto floor, or the fixed full scale), and the
+      // note under it the fabric and how balanced the solver's forces are (readouts.js).
+      setLegend: function (scale, top, name, note) {
+        el.legendTitle.textContent = name + ' ' + LEGEND_TOP[top];
+        el.legendNote.textContent = note;
         el.legendLo.textContent = '0';
         el.legendMid.textContent = fmt(scale / 2, 4);
         el.legendHi.textContent = fmt(scale, 4);

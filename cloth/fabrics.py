@@ -1,0 +1,53 @@
+"""The fabrics a scene may be made of: each one's stretch stiffness, shear stiffness and density.
+
+A fabric is a membrane (cloth/topology.py): structural edges of stiffness `stretch` (N/m) and
+both diagonals of every cell of stiffness `shear` (N/m), each pulling only when longer than at
+rest, and a mass of `density` (kg/m^2) spread over the vertices by the area each stands for.
+The three numbers are the fabric's and not the grid's: a spring of stiffness k between two
+vertices one spacing h apart stands for a strip of cloth h wide, whose tension per width
+k * strain is then independent of h; a square lattice with both diagonals of stiffness kd has
+the in-plane shear modulus G = kd. So the same fabric is the same cloth at every grid size.
+
+The numbers are orders of magnitude from measured fabrics at small strain: the Kawabata
+KES-FB1 tensile and shear tests (1 gf/(cm deg) of shear is 56 N/m per radian) as tabulated for
+woven and knitted apparel fabrics, and the in-plane stiffnesses fitted by Clyde, Teran and
+Tamstorf ("Modeling and data-driven parameter estimation for woven fabrics", SCA 2017) and by
+Wang, O'Brien and Ramamoorthi ("Data-driven elastic models for cloth", SIGGRAPH 2011). Woven
+fabrics: stretch 1e3-1e4 N/m, shear 20-170 N/m (a shear/stretch ratio of 0.005-0.05); knits,
+whose loops straighten before their yarn stretches: stretch 1e2-1e3 N/m, shear/stretch
+0.03-0.2; apparel weights 0.1-0.4 kg/m^2.
+"""
+
+# [name, label, stretch N/m, shear N/m, density kg/m^2, what it is]
+FABRICS = [
+    ['cotton', 'Cotton (woven shirting)', 5000.0, 150.0, 0.15,
+     'a plain-woven cotton shirting: stiff along its yarns, a little give on the bias'],
+    ['denim', 'Denim (heavy twill)', 10000.0, 170.0, 0.4,
+     'a 12 oz cotton twill: the stiffest and heaviest here'],
+    ['polyester', 'Polyester (light woven)', 2000.0, 20.0, 0.1,
+     'a light plain-woven polyester lining: stiff in stretch, soft in shear'],
+    ['jersey', 'Jersey (cotton knit)', 500.0, 50.0, 0.2,
+     'a single-knit cotton jersey, as in a T-shirt'],
+    ['spandex', 'Spandex (stretch knit)', 150.0, 30.0, 0.2,
+     'a cotton-elastane knit: stretches under its own weight'],
+]
+# The presets' fabric: its stretch under its own weight shows in the colours (a 1.5 m drop
+# strains jersey's top edge by density g height / stretch, 0.6%).
+DEFAULT_FABRIC = 'jersey'
+
+
+def fabric(name):
+    """The FABRICS row of `name` (None when there is none)."""
+    for i in range(len(FABRICS)):
+        if FABRICS[i][0] == name:
+            return FABRICS[i]
+    return None
+
+
+def fabric_of(stretch, shear, density):
+    """The name of the fabric with exactly these numbers, or '' for none."""
+    for i in range(len(FABRICS)):
+        f = FABRICS[i]
+        if f[2] == stretch and f[3] == shear and f[4] == density:
+            return f[0]
+    return ''

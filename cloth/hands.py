@@ -1,0 +1,203 @@
+"""Hands and pins.
+
+A hand holds a patch, with a finite force. It grips the vertex a person took hold of and the
+vertices within HAND_RADIUS of it along the cloth, each by a stiff spring to where the hand
+holds it (the hand's position plus the vertex's offset from the held one when it took hold):
+a force of HAND_STIFFNESS / count per metre of distance, capped at HAND_FORCE / count (a Huber
+spring: convex, so the step's energy stays convex; cloth/vbd.py). These springs are part of
+the fabric's step, solved with it: within reach the held vertex ends every step where the hand
+is (HAND_FORCE / HAND_STIFFNESS = 1 mm at full force), and beyond it the hand pulls with
+HAND_FORCE and the fabric stretches as far as that force takes it, no farther. Why a patch: a
+point force strains a 2D continuum as 1 / r, so a grid's edge at a point grip strains more the
+finer the grid; a patch of fixed size does not (cloth/fabrics.py).
+
+A pin is fixed in space. A hand that takes hold of a pin holds the pins and the cloth within
+its radius (a clamp and the cloth at it), moving them with the same force; letting go leaves
+the pins fixed where they are. Letting go removes the springs and nothing else: the cloth keeps
+the motion it has, and the stretch the hand left returns as the fabric's own motion.
+"""
+
+from cloth.values import SceneError
+from cloth.topology import walk_grip, label_pieces
+from cloth.integrate import rest_at
+
+# A person's pull: enough to lift and carry every preset's cloth in the heaviest fabric the
+# page offers (the Large cloth, 2 x 2 m of denim, weighs 16 N) and a little more, not so much
+# that a pull beyond reach stores more stretch than a release lets go as a gentle snap.
+HAND_FORCE = 20.0
+# A hand's grip: the vertices within this distance of the held one along the cloth.
+HAND_RADIUS = 0.02
+# Its springs' stiffness, all together: at full force the held vertex is 1 mm off the hand.
+HAND_STIFFNESS = HAND_FORCE / 0.001
+
+
+def check_vertex(cloth, k):
+    if not (k >= 0 and k < cloth.n_verts and k == (k // 1)):
+        raise SceneError('vertex: must be an index from 0 to cols * rows - 1')
+
+
+def check_point(x, y):
+    if not (x > -1e9 and x < 1e9 and y > -1e9 and y < 1e9):
+        raise SceneError('to: must be finite and within 1e9 of the origin')
+
+
+def grab(cloth, k, x, y):
+    """A hand takes hold of vertex k and holds it at (x, y)."""
+    check_vertex(cloth, k)
+    check_point(x, y)
+    if cloth.held[k] == 0:
+        cloth.n_held += 1
+    cloth.held[k] = 1
+    cloth.target[k + k] = x
+    cloth.target[k + k + 1] = y
+    cloth.hand_from[k + k] = x
+    cloth.hand_from[k + k + 1] = y
+    cloth.hold_from[k + k] = x
+    cloth.hold_from[k + k + 1] = y
+    regrip(cloth)
+    wake(cloth)
+
+
+def move(cloth, k, x, y):
+    """The hand holding k goes to (x, y) by the end of the next frame."""
+    check_vertex(cloth, k)
+    if cloth.held[k] == 0:
+        raise SceneError('vertex: move needs a held vertex (grab it first)')
+    check_point(x, y)
+    if x == cloth.target[k + k] and y == cloth.target[k + k + 1]:
+        return  # a hand held still changes nothing, and must not keep the cloth awake
+    cloth.target[k + k] = x
+    cloth.target[k + k + 1] = y
+    wake(cloth)
+
+
+def move_by(cloth, k, dx, dy):
+    """The hand holding k goes (dx, dy) from where it took hold (compare mode: every panel's
+    hand moves by the pointer's displacement)."""
+    check_vertex(cloth, k)
+    move(cloth, k, cloth.hold_from[k + k] + dx, cloth.hold_from[k + k + 1] + dy)
+
+
+def release(cloth, k):
+    """Let go of k: its hand's springs go; a pin it held stays where it is."""
+    check_vertex(cloth, k)
+    if cloth.held[k] == 1:
+        cloth.n_held -= 1
+    cloth.held[k] = 0
+    regrip(cloth)
+    wake(cloth)
+
+
+def pin(cloth, k):
+    check_vertex(cloth, k)
+    cloth.pinned[k] = 1
+    regrip(cloth)
+    wake(cloth)
+
+
+def unpin(cloth, k):
+    check_vertex(cloth, k)
+    cloth.pinned[k] = 0
+    regrip(cloth)
+    wake(cloth)
+
+
+def toggle_pin(cloth, k):
+    check_vertex(cloth, k)
+    if cloth.pinned[k] == 1:
+        unpin(cloth, k)
+    else:
+        pin(cloth, k)
+
+
+def wake(cloth):
+    cloth.asleep = False
+    cloth.still_frames = 0
+
+
+def regrip(cloth):
+    """The grips after any change of holds, pins or edges: each held vertex, in index order,
+    grips itself and what is within HAND_RADIUS of it that no earlier hand grips (a hand on a
+    free vertex only free vertices; a hand on a pin pins too); then who is fixed. A vertex
+    that starts or stops being fixed starts from rest."""
+    n = cloth.n_verts
+    grip = cloth.grip
+    for k in range(n):
+        grip[k] = -1
+    count = 0
+    for k in range(n):
+        if cloth.held[k] == 0 or grip[k] >= 0:
+            continue
+        found = walk_grip(cloth, k, HAND_RADIUS * (1.0 + 1e-9), cloth.grip_dist, cloth.grip_list)
+        kept = 0
+        for j in range(found):
+            v = cloth.grip_list[j]
+            if v != k and (grip[v] >= 0 or cloth.held[v] != 0 or
+                           (cloth.pinned[v] != 0 and cloth.pinned[k] == 0)):
+                continue
+            cloth.grip_list[kept] = v
+            kept += 1
+        for j in range(kept):
+            v = cloth.grip_list[j]
+            grip[v] = k
+            cloth.offset[v + v] = cloth.pos[v + v] - cloth.pos[k + k]
+            cloth.offset[v + v + 1] = cloth.pos[v + v + 1] - cloth.pos[k + k + 1]
+            cloth.grip_k[v] = HAND_STIFFNESS / kept
+            cloth.grip_f[v] = HAND_FORCE / kept
+            cloth.gripped[count] = v
+            count += 1
+    cloth.n_gripped = count
+    refix(cloth)
+
+
+def refix(cloth):
+    """fixed = pinned and in no hand; inv_mass; which vertices fall freely (their piece has no
+    fixed vertex and no hand: integrate.predict's guess); the weight the imbalance is measured
+    against; and the coarse operators are stale."""
+    g2 = cloth.gravity_x * cloth.gravity_x + cloth.gravity_y * cloth.gravity_y
+    if g2 < 9.81 * 9.81:
+        g2 = 9.81 * 9.81     # in weak or no gravity, the imbalance is still against 1 g
+    load2 = 0.0
+    for k in range(cloth.n_verts):
+        fixed = 1 if cloth.pinned[k] != 0 and cloth.grip[k] < 0 else 0
+        if fixed != cloth.fixed[k]:
+            cloth.fixed[k] = fixed
+            rest_at(cloth, k)
+        if fixed != 0:
+            cloth.inv_mass[k] = 0.0
+        else:
+            cloth.inv_mass[k] = 1.0 / cloth.mass[k]
+            load2 += cloth.mass[k] * cloth.mass[k] * g2
+    cloth.load2 = load2
+    count = label_pieces(cloth)
+    held = cloth.piece_held
+    for p in range(count):
+        held[p] = 0
+    for k in range(cloth.n_verts):
+        if cloth.fixed[k] != 0 or cloth.grip[k] >= 0:
+            held[cloth.piece[k]] = 1
+    for k in range(cloth.n_verts):
+        cloth.falling[k] = 1 - held[cloth.piece[k]]
+    cloth.mg_stale = True
+
+
+def aim_hands(cloth):
+    """Where each gripped vertex's spring pulls it this step: the hand cloth.share of the way
+    from where it was at the frame's start to where it is going."""
+    share = cloth.share
+    for h in range(cloth.n_gripped):
+        v = cloth.gripped[h]
+        k = cloth.grip[v]
+        kk = k + k
+        x = cloth.hand_from[kk] + (cloth.target[kk] - cloth.hand_from[kk]) * share
+        y = cloth.hand_from[kk + 1] + (cloth.target[kk + 1] - cloth.hand_from[kk + 1]) * share
+        cloth.aim[v + v] = x + cloth.offset[v + v]
+        cloth.aim[v + v + 1] = y + cloth.offset[v + v + 1]
+
+
+def hands_arrived(cloth):
+    """At a frame's end every hand is where it was going."""
+    for h in range(cloth.n_gripped):
+        k = cloth.grip[cloth.gripped[h]]
+        cloth.hand_from[k + k] = cloth.target[k + k]
+        cloth.hand_from[k + k + 1] = cloth.target[k + k + 1]

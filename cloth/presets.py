@@ -1,0 +1,141 @@
+"""The presets: scenes as functions of the grid, the same for the page, the tests and the
+benchmark.
+
+Each preset is a cloth of a fixed size in metres, so a finer grid is the same cloth resolved
+more finely (spacing = size / (the larger of cols - 1 and rows - 1)). Every one hangs from a
+rod or from clamps of finite width (CLAMP of its edge held), never from single vertices: a point
+load strains a 2D continuum as 1 / r, so the strain at a point pin grows with the grid whatever
+the solver (cloth/fabrics.py), while a clamp's field converges. A person can still pin any
+vertex. All start on their rest grid, in the default fabric (cloth/fabrics.py) and still air's
+damping of 1/s (a released cloth comes to rest within seconds, as fabric does in air).
+"""
+
+import math
+
+from cloth.fabrics import fabric, DEFAULT_FABRIC
+from cloth.keys import MODEL, spec
+from cloth.hands import HAND_RADIUS
+
+# A clamp holds this much of the cloth's edge: as far as a hand's grip reaches, so that a hand
+# taking hold of a clamp's end carries the whole clamp (the Two corners preset carries one).
+CLAMP = HAND_RADIUS
+# Two corners: the right clamp is carried in to CORNER_SPAN of the width over CARRY_FRAMES
+# (a smooth start and stop), so the cloth hangs slack, its top edge sagging. Carried, not put
+# there at once: a clamp moved 0.3 m in one frame stretches the cloth by as much.
+CORNER_SPAN = 0.8
+CARRY_FRAMES = 60
+# Towel on a peg: the peg's radius.
+PEG = 0.025
+
+#          name        label               cols rows size (m)
+PRESETS = [['curtain', 'Curtain', 40, 30, 2.0],
+           ['corners', 'Two corners', 30, 30, 1.6],
+           ['towel', 'Towel on a peg', 30, 30, 1.0],
+           ['chain', 'Chain', 40, 1, 1.6],
+           ['large', 'Large cloth', 100, 100, 2.0],
+           ['tearable', 'Tearable', 60, 40, 2.0],
+           ['flag', 'Flag in the wind', 45, 30, 1.8]]
+# Tearable's edges break past this strain (the default fabric's tension of 500 N/m x 0.1 =
+# 50 N/m: a hand at full strength, pulling beyond reach, tears it at every grid size).
+TEARABLE_STRAIN = 0.1
+
+
+def preset(name):
+    for i in range(len(PRESETS)):
+        if PRESETS[i][0] == name:
+            return PRESETS[i]
+    return None
+
+
+def spacing_of(name, cols, rows):
+    cells = max(cols - 1, rows - 1, 1)
+    return preset(name)[4] / cells
+
+
+def top_row_within(cols, spacing, x0, x1):
+    """The top-row vertices whose x is in [x0, x1] (a clamp); on a grid coarser than the clamp,
+    the one nearest its middle."""
+    out = []
+    for c in range(cols):
+        x = c * spacing
+        if x >= x0 - 1e-9 * spacing and x <= x1 + 1e-9 * spacing:
+            out.append(c)
+    if len(out) == 0:
+        c = int(math.floor(0.5 * (x0 + x1) / spacing + 0.5))
+        out.append(min(max(c, 0), cols - 1))
+    return out
+
+
+def clamps(name, cols, rows, spacing):
+    w = (cols - 1) * spacing
+    if name == 'corners':
+        left = top_row_within(cols, spacing, 0.0, CLAMP)
+        right = top_row_within(cols, spacing, w - CLAMP, w)
+        for i in range(len(right)):
+            if right[i] not in left:
+                left.append(right[i])
+        return left
+    if name == 'towel':
+        return top_row_within(cols, spacing, 0.5 * w - CLAMP, 0.5 * w + CLAMP)
+    if name == 'chain':
+        return top_row_within(cols, spacing, 0.0, CLAMP)
+    if name == 'flag':
+        return [r * cols for r in range(rows)]
+    return [c for c in range(cols)]       # a rod along the top
+
+
+def preset_scene(name, cols, rows):
+    """The scene of preset `name` on a cols x rows grid, as a JSON object."""
+    p = preset(name)
+    if p is None:
+        return None
+    h = spacing_of(name, cols, rows)
+    f = fabric(DEFAULT_FABRIC)
+    scene = {'model': MODEL, 'name': p[1], 'cols': cols, 'rows': rows, 'spacing': h,
+             'pins': clamps(name, cols, rows, h), 'dt': spec('dt').fallback, 'damping': 1.0,
+             'stretch': f[2], 'shear': f[3], 'density': f[4]}
+    w = (cols - 1) * h
+    if name == 'corners' and cols > 1:
+        k = cols - 1
+        actions = [{'frame': 0, 'op': 'grab', 'vertex': k, 'to': [w, 0.0]}]
+        for t in range(1, CARRY_FRAMES + 1):
+            s = smooth(t / CARRY_FRAMES)
+            actions.append({'frame': t, 'op': 'move', 'vertex': k,
+                            'to': [w - (1.0 - CORNER_SPAN) * w * s, 0.0]})
+        actions.append({'frame': CARRY_FRAMES, 'op': 'release', 'vertex': k})
+        scene['actions'] = actions
+    if name == 'towel':
+        scene['obstacles'] = [{'circle': [0.5 * w, PEG, PEG], 'friction': 0.5}]
+    if name == 'tearable':
+        scene['tear'] = TEARABLE_STRAIN
+    if name == 'flag':
+        scene['wind'] = [10.0, 0.0]
+        scene['drag'] = 0.4
+        scene['gust'] = [0.5, 1.7]
+    return scene
+
+
+def smooth(t):
+    """0 to 1 with zero velocity at both ends: 3 t^2 - 2 t^3 (a polynomial: the same bits in
+    both runtimes, where a cosine might differ in the last place)."""
+    return t * t * (3.0 - 2.0 * t)
+
+
+def preset_view(name, cols, rows):
+    """[x0, x1, y0, y1] the page frames the preset in, or [] for the page's own fit (the grid,
+    room below it for the sag, and whatever the wind and obstacles need)."""
+    h = spacing_of(name, cols, rows)
+    w = (cols - 1) * h
+    ht = (rows - 1) * h
+    if name == 'chain':
+        r = w + ht
+        return [-r, r, -r, 0.15 * r]
+    if name == 'towel':
+        big = max(w, ht)
+        return [-0.1 * big, w + 0.1 * big, -ht - 0.35 * big, 0.15 * big]
+    if name == 'flag':
+        return [-0.15 * w, 1.15 * w, -ht - 0.6 * w, 0.1 * w]
+    if name == 'corners':
+        big = max(w, ht)
+        return [-0.08 * big, w + 0.08 * big, -ht - 0.68 * big, 0.08 * big]
+    return []

@@ -1,0 +1,143 @@
+"""The cloth's state: flat arrays, one per quantity (n vertices, m edges).
+
+Hot (read and written every step):
+    pos, vel      2n doubles, x and y interleaved: where each vertex is and how fast it moves
+    prev, vel_prev  2n: the same one step ago (BDF2's history, cloth/integrate.py; Verlet's x*)
+    pred, base    2n: a step's inertial target and BDF2's 4/3 x - 1/3 x-
+    fixed         n ints: 1 for a vertex nothing moves (pinned and not in a hand)
+    mass          n doubles: density times the area the vertex stands for
+    edges         edge_a, edge_b, rest, stiff, slot (cloth/topology.py) and the adjacency
+    grip, aim, grip_k, grip_f  the hands' springs (cloth/hands.py)
+Bookkeeping: pins, holds and where each hand is; obstacles; the measures the page reads.
+
+The core knows nothing of the DOM or GL: the page reads `pos`, the edges and the measures.
+"""
+
+from cloth.host import f64, i32
+
+
+class Cloth:
+    def __init__(self, scene):
+        cols = scene.cols
+        rows = scene.rows
+        n = cols * rows
+        self.scene = scene
+        self.cols = cols
+        self.rows = rows
+        self.spacing = scene.spacing
+        self.n_verts = n
+        # the step (step.configure): substep size, gravity, the solver and its budget
+        self.dt = scene.dt
+        self.h = scene.dt
+        self.h_bdf = scene.dt
+        self.keep = 1.0
+        self.w_scale = 1.0
+        self.order = 2            # BDF2, or 1 (backward Euler): integrate.predict
+        self.damping = 0.0
+        self.gravity_x = 0.0
+        self.gravity_y = 0.0
+        self.substeps = 1
+        self.iterations = 0
+        self.corrections = 0
+        self.solver = 0
+        self.stages = []          # a step's stages, chosen by step.configure
+        self.frame_stages = []    # a frame's, before its steps
+        self.after_stages = []    # and after them
+        # motion
+        self.pos = f64(2 * n)
+        self.vel = f64(2 * n)
+        self.prev = f64(2 * n)
+        self.vel_prev = f64(2 * n)
+        self.pred = f64(2 * n)
+        self.base = f64(2 * n)
+        self.falling = i32(n)     # 1 where nothing holds the vertex's piece (hands.refix)
+        self.piece = i32(n)       # its connected piece (topology.label_pieces)
+        self.stack = i32(n)
+        self.piece_held = i32(n)
+        self.mass = f64(n)
+        self.inv_mass = f64(n)    # 1 / mass, 0 where fixed (obstacles and air read it)
+        self.fixed = i32(n)
+        self.pinned = i32(n)
+        self.held = i32(n)
+        self.n_held = 0
+        # the hands (cloth/hands.py): each held vertex's hand, where it is now (`target`),
+        # where it was at the frame's start and where it took hold; per vertex the hand that
+        # grips it (-1: none), its offset from the hand, and its spring's stiffness and cap
+        self.target = f64(2 * n)
+        self.hand_from = f64(2 * n)
+        self.hold_from = f64(2 * n)
+        self.grip = i32(n)
+        self.offset = f64(2 * n)
+        self.aim = f64(2 * n)
+        self.grip_k = f64(n)
+        self.grip_f = f64(n)
+        self.gripped = i32(n)     # the vertices some hand grips
+        self.n_gripped = 0
+        self.grip_dist = f64(n)   # work arrays of a grip's walk
+        self.grip_list = i32(n)
+        for k in range(n):
+            self.grip[k] = -1
+            self.grip_dist[k] = -1.0
+        # the edges (topology.build)
+        self.n_edges = 0
+        self.n_struct = 0
+        self.broken = 0
+        # the solvers' work (their prepare)
+        self.levels = []
+        self.lam = f64(0)
+        self.hand_lam = f64(0)
+        self.mg_stale = True
+        self.mg_age = 0
+        # measures: per structural edge the value the colours show, per vertex the seed's
+        # stress Q, and summaries
+        self.load2 = 0.0          # sum over free vertices of (m g)^2: the imbalance's scale
+        self.imbalance = 0.0      # the last step's RMS force imbalance over the weight's
+        self.out = f64(4)
+        # counters: the benchmark's cost measure
+        self.steps = 0
+        self.sweeps = 0
+        self.corrected = 0
+        self.rebuilds = 0
+        self.extra_rounds = 0
+        # sleep (cloth/sleep.py)
+        self.asleep = False
+        self.still_frames = 0
+        self.last_pos = f64(0)
+        self.still_from = f64(0)
+        # the air's clock (cloth/air.py)
+        self.air_t = 0.0
+        # obstacles (cloth/obstacles.py): each one's shape, half width and height, friction,
+        # and centre: where it is (`at`), where it was when the step began (`was`), and where
+        # an `obstacle` action sends it by the end of the frame (`to`)
+        obstacles = scene.obstacles
+        m = len(obstacles)
+        self.n_obstacles = m
+        self.obstacle_shape = i32(m)
+        self.obstacle_half = f64(2 * m)
+        self.obstacle_friction = f64(m)
+        self.obstacle_at = f64(2 * m)
+        self.obstacle_was = f64(2 * m)
+        self.obstacle_to = f64(2 * m)
+        self.obstacle_from = f64(2 * m)
+        self.obstacle_bounds = f64(4 * m)
+        self.obstacle_row_box = f64(4 * rows if m > 0 else 0)
+        self.obstacle_row_mask = i32(rows if m > 0 else 0)
+        for j in range(m):
+            o = obstacles[j]
+            self.obstacle_shape[j] = o[0]
+            self.obstacle_half[j + j] = o[3]
+            self.obstacle_half[j + j + 1] = o[4]
+            self.obstacle_friction[j] = o[5]
+            for c in [self.obstacle_at, self.obstacle_was, self.obstacle_to, self.obstacle_from]:
+                c[j + j] = o[1]
+                c[j + j + 1] = o[2]
+        # the rest grid: row 0 at y = 0, x to the right, y up
+        h = scene.spacing
+        for r in range(rows):
+            for c in range(cols):
+                k = r * cols + c
+                self.pos[k + k] = c * h
+                self.pos[k + k + 1] = -r * h
+        for i in range(len(scene.pins)):
+            self.pinned[scene.pins[i]] = 1
+            self.fixed[scene.pins[i]] = 1

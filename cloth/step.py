@@ -1,0 +1,164 @@
+"""A frame of the cloth: its stages, chosen once when the scene is configured.
+
+    frame:  the air (if it moves)
+            then `substeps` steps of dt / substeps, each:
+                aim the hands  ->  move the obstacles (if any)  ->  predict  ->  solve
+                ->  push out of obstacles (if any)  ->  finish (velocities)
+                ->  tear (if the scene tears)
+            then: hands and obstacles arrive where they were going, and sleep (if on)
+
+The solver (cloth/solvers.py) supplies predict, solve and finish: the integrator and the
+minimisation of the step's energy. Everything a stage needs is decided in `configure` (which
+stages run, the step's constants), never by the stage itself, each step.
+
+Operations are module functions taking the cloth, not methods: a Transcrypt method call binds
+a fresh closure on every call, and the hot path must not allocate.
+"""
+
+from cloth.host import f64
+from cloth.values import SceneError
+from cloth.keys import solver_index
+from cloth.solvers import REGISTRY, SEED_SOLVER
+from cloth.state import Cloth
+from cloth import topology
+from cloth import integrate
+from cloth import measure
+from cloth import hands
+from cloth import obstacles
+from cloth import air
+from cloth import sleep
+
+
+def new_cloth(scene):
+    """A cloth for a parsed scene, at rest on its rest grid."""
+    cloth = Cloth(scene)
+    topology.build(cloth, scene.stretch, scene.shear)
+    set_masses(cloth, scene.density)
+    measure.prepare(cloth)
+    cloth.tear_limit = f64(1)
+    configure(cloth, scene)
+    for k in range(cloth.n_verts):
+        integrate.rest_at(cloth, k)
+    hands.regrip(cloth)
+    return cloth
+
+
+def set_masses(cloth, density):
+    """Each vertex's mass: density times the area it stands for, a spacing square inside, half
+    of it on an edge and a quarter at a corner, so the cloth weighs density times its area on
+    every grid (a grid of one row or column stands for a strip one spacing wide)."""
+    h = cloth.spacing
+    for r in range(cloth.rows):
+        ay = h if cloth.rows == 1 or (r > 0 and r < cloth.rows - 1) else 0.5 * h
+        for c in range(cloth.cols):
+            ax = h if cloth.cols == 1 or (c > 0 and c < cloth.cols - 1) else 0.5 * h
+            cloth.mass[r * cloth.cols + c] = density * ax * ay
+
+
+def configure(cloth, scene):
+    """The step's constants and stages, from the scene's settings: at construction, and by
+    `retune` when a person changes a setting of the running cloth."""
+    cloth.scene = scene
+    cloth.dt = scene.dt
+    cloth.substeps = scene.substeps
+    cloth.iterations = scene.iterations
+    cloth.corrections = scene.corrections
+    cloth.h = scene.dt / scene.substeps
+    cloth.gravity_x = scene.gravity_x
+    cloth.gravity_y = scene.gravity_y
+    cloth.solver = solver_index(scene.solver)
+    cloth.seed = scene.solver == SEED_SOLVER
+    cloth.tear_limit[0] = (1.0 + scene.tear) * (1.0 + scene.tear)
+    integrate.configure(cloth, scene)
+    solver = REGISTRY[cloth.solver]
+    solver[0].prepare(cloth)
+    cloth.frame_stages = []
+    if scene.drag > 0.0 and (scene.wind_x != 0.0 or scene.wind_y != 0.0):
+        cloth.frame_stages.append(air.feel_air)
+    cloth.stages = [hands.aim_hands]
+    if cloth.n_obstacles > 0:
+        cloth.stages.append(obstacles.advance)
+    cloth.stages.append(solver[1])
+    cloth.stages.append(solver[2])
+    if cloth.n_obstacles > 0:
+        cloth.stages.append(obstacles.push_out)
+    cloth.stages.append(solver[3])
+    if scene.tear > 0.0:
+        cloth.stages.append(tear)
+    cloth.after_stages = [hands.hands_arrived]
+    if cloth.n_obstacles > 0:
+        cloth.after_stages.append(obstacles.obstacles_arrived)
+    if scene.sleep:
+        sleep.configure(cloth, scene)
+        cloth.after_stages.append(sleep.settle)
+    cloth.n_stages = len(cloth.stages)
+    cloth.n_frame_stages = len(cloth.frame_stages)
+    cloth.n_after_stages = len(cloth.after_stages)
+
+
+def frame(cloth):
+    """Advance one frame (see the module's comment)."""
+    if cloth.asleep:
+        return
+    stages = cloth.frame_stages
+    for i in range(cloth.n_frame_stages):
+        stages[i](cloth)
+    stages = cloth.stages
+    count = cloth.n_stages
+    substeps = cloth.substeps
+    for s in range(substeps):
+        cloth.share = (s + 1) / substeps
+        for i in range(count):
+            stages[i](cloth)
+        cloth.steps += 1
+    stages = cloth.after_stages
+    for i in range(cloth.n_after_stages):
+        stages[i](cloth)
+
+
+def tear(cloth):
+    """Every edge strained past the scene's `tear` breaks, each step (a tear runs as fast as
+    the fabric hands its load on to the next edge, not at a rate of edges a frame)."""
+    if topology.mark_strained(cloth.pos, cloth.edge_a, cloth.edge_b, cloth.rest, cloth.n_edges,
+                              cloth.tear_limit) > 0:
+        broke(cloth)
+
+
+def cut(cloth, x0, y0, x1, y1):
+    """Break every edge whose segment crosses the blade from (x0, y0) to (x1, y1), where the
+    cloth is now."""
+    for v in [x0, y0, x1, y1]:
+        if not (v > -1e9 and v < 1e9):
+            raise SceneError('cut: from and to must be finite and within 1e9 of the origin')
+    if topology.mark_crossed(cloth.pos, cloth.edge_a, cloth.edge_b, cloth.rest, cloth.n_edges,
+                             x0, y0, x1, y1) > 0:
+        broke(cloth)
+
+
+def broke(cloth):
+    """Edges were marked broken: they go, and what follows from the new topology (the grips
+    never reach across a cut; the coarse operators are stale)."""
+    cloth.broken += topology.remove_marked(cloth)
+    hands.regrip(cloth)
+    hands.wake(cloth)
+
+
+def retune(cloth, scene):
+    """Apply new settings (a scene on the same grid, parse_scene-checked) to the running cloth:
+    positions, velocities, pins and holds stay as they are."""
+    if scene.cols != cloth.cols or scene.rows != cloth.rows or scene.spacing != cloth.spacing:
+        raise SceneError('scene: cols, rows and spacing make the grid; a change of them needs a '
+                         'new cloth')
+    old = cloth.scene
+    h_old = cloth.h
+    solver_old = cloth.solver
+    if scene.stretch != old.stretch or scene.shear != old.shear:
+        topology.restiffen(cloth, scene.stretch, scene.shear)
+    if scene.density != old.density:
+        set_masses(cloth, scene.density)
+    configure(cloth, scene)
+    if cloth.h != h_old or cloth.solver != solver_old or \
+            scene.gravity_x != old.gravity_x or scene.gravity_y != old.gravity_y:
+        integrate.restart(cloth)
+    hands.refix(cloth)
+    hands.wake(cloth)

@@ -1,0 +1,463 @@
+"""The default solver: vertex block descent on the step's energy, with a coarse-grid correction.
+
+A step (cloth/integrate.py) is the minimum of the convex energy
+    G(x) = sum_i w_i / 2 |x_i - pred_i|^2 + sum_e k_e / 2 (L_e - L0_e)_+^2 + sum_hands H(x)
+over the free vertices: inertia, tension-only springs (cloth/topology.py) and hands
+(cloth/hands.py). Each of its terms is convex: (L - L0)_+^2 / 2 is half the squared distance
+of the edge vector to the disc of radius L0, and a hand's capped pull is a Huber function. So
+the step has one answer, and any method that lowers G approaches it.
+
+Vertex block descent (Chen, Macklin et al., "Vertex Block Descent", SIGGRAPH 2024) is the
+seed's relaxation done on that energy: for each vertex in turn, one 2x2 Newton step on G with
+its neighbours held, x_i += H_i^-1 f_i, with f_i = -dG/dx_i and
+    H_i = w_i I + sum_e k (n n^T + (1 - L0/L)_+ (I - n n^T)) + a hand's k_h I.
+Every spring's axial stiffness k n n^T is in H_i, even a slack spring's (whose force and true
+curvature are 0): where a spring is about to pull, the true Hessian lacks it and the Newton
+step overshoots into it (measured: cotton two corners never came to rest, and blew up at
+60x60, when only springs longer than 0.8 L0 put it in); a larger H only shortens steps, and
+the fixed point, where every f_i = 0, is the same.
+
+Sweeps alternate forward and backward, starting forward every step: a fixed order leans the
+answer one way, and a step that starts where the last one ended would flip the lean between
+frames (measured: a 30 Hz limit cycle of 3 cm/s at a clamp's end).
+
+Sweeps remove an error within a few vertices' reach only; the coarse-grid correction
+(cloth/multigrid.py) removes the smooth rest: the Hessian of G and its gradient at the current
+positions, restricted to coarser grids by Galerkin products, solved there, interpolated back as
+one direction, and a line search along it on G itself (G is convex along any line, so a
+quadratic fit and a halving fallback find its minimum). Per step: iterations // 2 sweeps,
+the corrections (a sweep between two), the other sweeps. The coarse operators are rebuilt
+every REBUILD steps, or at once when a vertex has moved more than a spacing since they were
+made, or the topology, the pins or the hands changed.
+"""
+
+import math
+
+from cloth.host import f64
+from cloth.multigrid import DIAG, hierarchy, galerkin, restrict, prolong, pcg, factor_dense
+from cloth.contact import keep_out
+from cloth.integrate import UNBALANCED
+
+NAME = 'vbd'
+LABEL = 'Vertex descent + multigrid'
+# substeps, iterations (sweeps a step) and coarse corrections a step
+BUDGET = [1, 5, 1]
+# The coarse operators are reused for this many steps: they are the Hessian where the cloth
+# was, and a rebuild costs about six sweeps (measured at 60x60); a cloth that moved more than a
+# spacing since gets new ones at once.
+REBUILD = 8
+# A step whose forces are still far from balance after its budget (integrate.UNBALANCED) gets
+# another round of a correction and its sweeps, up to MORE_ROUNDS of them: a stiff cloth
+# swinging far from its last shape needs them, while a hanging cloth settling stays below it
+# and pays nothing.
+MORE_ROUNDS = 4
+# The coarse operators take a slack spring's axial stiffness only while it is longer than this
+# share of its rest length: one about to pull (the sweeps take every spring's). With every
+# slack spring's, the coarse problem believes a slack region stiff, and its correction moves
+# it too little (measured: a stiff towel's swinging flap, a correction 0.6 of the way to the
+# line's minimum, the towel never settling).
+COARSE_NEAR = 0.0
+# Whether a vertex tries its exact local Newton step first (see sweep).
+LOCAL_SEARCH = True
+# Conjugate gradient steps on the coarse problem, each preconditioned by one V-cycle.
+COARSE_STEPS = 2
+# The line search along a correction: at most the correction itself (a step beyond it, which a
+# quadratic fit through a kink of G may ask for, once gained energy that a stiff cloth's
+# swinging flaps kept: a cotton towel hung from one point went unstable at 20x20), and
+# Armijo's fraction.
+MOST_ALPHA = 1.0
+ARMIJO = 1e-4
+
+
+def prepare(cloth):
+    """The multigrid levels and the correction's work arrays (once per cloth: their sizes are
+    the grid's)."""
+    if len(cloth.levels) > 0 or cloth.n_verts < 4:
+        return
+    cloth.levels = hierarchy(cloth.cols, cloth.rows)
+    cloth.grad = f64(2 * cloth.n_verts)
+    cloth.dirn = f64(2 * cloth.n_verts)
+    cloth.mg_anchor = f64(2 * cloth.n_verts)
+    nc = cloth.levels[1].n if len(cloth.levels) > 1 else 0
+    cloth.coarse_e = f64(2 * nc)
+    cloth.coarse_b = f64(2 * nc)
+    cloth.mg_stale = True
+
+
+def solve(cloth):
+    """Minimise G from the guess `predict` left in pos: the budget (iterations // 2 sweeps,
+    the corrections, the rest of the sweeps), then more rounds while far from balance."""
+    sweeps = cloth.iterations
+    first = sweeps // 2
+    forward = True
+    for s in range(first):
+        sweep(cloth, forward, False)
+        forward = not forward
+    coarse = len(cloth.levels) > 1
+    if coarse:
+        for c in range(cloth.corrections):
+            if c > 0:
+                sweep(cloth, forward, False)
+                forward = not forward
+            correct(cloth)
+    for s in range(first, sweeps):
+        sweep(cloth, forward, s == sweeps - 1)
+        forward = not forward
+    rounds = 0
+    while cloth.imbalance > UNBALANCED and rounds < MORE_ROUNDS and sweeps > 0:
+        if coarse and cloth.corrections > 0:
+            correct(cloth)
+        for s in range(sweeps):
+            sweep(cloth, forward, s == sweeps - 1)
+            forward = not forward
+        rounds += 1
+        cloth.extra_rounds += 1
+
+
+def sweep(cloth, forward, last):
+    """One vertex block descent sweep. On the step's last (`last`), the force each vertex
+    found before its move is summed: cloth.imbalance, the solver's own residual.
+
+    Each vertex first tries the Newton step of its exact local energy (the pulling springs'
+    Hessian only: a slack spring resists nothing, so a vertex that only slack springs touch
+    goes straight to its target), and keeps it if it lowered that energy by ARMIJO of what the
+    step promised; else (a slack spring it made pull, or a pulling one turned) it takes the
+    step with every spring's axial stiffness in the Hessian, which overestimates the energy's
+    curvature along the step and so never overshoots."""
+    pos = cloth.pos
+    pred = cloth.pred
+    fixed = cloth.fixed
+    mass = cloth.mass
+    start = cloth.adj_start
+    other = cloth.adj_other
+    arest = cloth.adj_rest
+    ak = cloth.adj_k
+    grip = cloth.grip
+    aim = cloth.aim
+    grip_k = cloth.grip_k
+    grip_f = cloth.grip_f
+    n = cloth.n_verts
+    ws = cloth.w_scale
+    contact = cloth.n_obstacles > 0
+    search = LOCAL_SEARCH
+    sqrt = math.sqrt
+    f2 = 0.0
+    for t in range(n):
+        i = t if forward else n - 1 - t
+        if fixed[i] != 0:
+            continue
+        ii = i + i
+        xi = pos[ii]
+        yi = pos[ii + 1]
+        w = mass[i] * ws
+        ex = pred[ii] - xi
+        ey = pred[ii + 1] - yi
+        fx = w * ex
+        fy = w * ey
+        e0 = 0.5 * w * (ex * ex + ey * ey)
+        hxx = w
+        hxy = 0.0
+        hyy = w
+        sxx = 0.0          # the slack springs' axial stiffness
+        sxy = 0.0
+        syy = 0.0
+        for q in range(start[i], start[i + 1]):
+            j = other[q] + other[q]
+            dx = pos[j] - xi
+            dy = pos[j + 1] - yi
+            L2 = dx * dx + dy * dy
+            if L2 < 1e-30:
+                continue
+            r0 = arest[q]
+            L = sqrt(L2)
+            k = ak[q]
+            nx = dx / L
+            ny = dy / L
+            if L > r0:
+                s = k * (L - r0)
+                e0 += 0.5 * s * (L - r0)
+                fx += s * nx
+                fy += s * ny
+                t1 = k - k * r0 / L
+                t2 = k * r0 / L
+                hxx += t1 + t2 * nx * nx
+                hxy += t2 * nx * ny
+                hyy += t1 + t2 * ny * ny
+            else:
+                sxx += k * nx * nx
+                sxy += k * nx * ny
+                syy += k * ny * ny
+        kh = 0.0
+        if grip[i] >= 0:
+            # A hand: a spring of stiffness grip_k to its aim whose pull stops growing at
+            # grip_f (cloth/hands.py); its curvature is at most grip_k.
+            dx = aim[ii] - xi
+            dy = aim[ii + 1] - yi
+            kh = grip_k[i]
+            d = sqrt(dx * dx + dy * dy)
+            if kh * d > grip_f[i]:
+                s = grip_f[i] / d
+                e0 += grip_f[i] * d - 0.5 * grip_f[i] * grip_f[i] / kh
+            else:
+                s = kh
+                e0 += 0.5 * kh * d * d
+            fx += s * dx
+            fy += s * dy
+            hxx += kh
+            hyy += kh
+        if last:
+            f2 += fx * fx + fy * fy
+        ok = False
+        if search:
+            det = hxx * hyy - hxy * hxy
+            mx = (hyy * fx - hxy * fy) / det
+            my = (hxx * fy - hxy * fx) / det
+            x1 = xi + mx
+            y1 = yi + my
+            ex = pred[ii] - x1
+            ey = pred[ii + 1] - y1
+            e1 = 0.5 * w * (ex * ex + ey * ey)
+            for q in range(start[i], start[i + 1]):
+                j = other[q] + other[q]
+                dx = pos[j] - x1
+                dy = pos[j + 1] - y1
+                L = sqrt(dx * dx + dy * dy)
+                r0 = arest[q]
+                if L > r0:
+                    e1 += 0.5 * ak[q] * (L - r0) * (L - r0)
+            if kh > 0.0:
+                dx = aim[ii] - x1
+                dy = aim[ii + 1] - y1
+                d = sqrt(dx * dx + dy * dy)
+                if kh * d > grip_f[i]:
+                    e1 += grip_f[i] * d - 0.5 * grip_f[i] * grip_f[i] / kh
+                else:
+                    e1 += 0.5 * kh * d * d
+            if e1 <= e0 - ARMIJO * (fx * mx + fy * my):
+                pos[ii] = x1
+                pos[ii + 1] = y1
+                ok = True
+        if not ok:
+            hxx += sxx
+            hxy += sxy
+            hyy += syy
+            det = hxx * hyy - hxy * hxy
+            pos[ii] = xi + (hyy * fx - hxy * fy) / det
+            pos[ii + 1] = yi + (hxx * fy - hxy * fx) / det
+        if contact:
+            keep_out(cloth, i)
+    cloth.sweeps += 1
+    if last:
+        cloth.out[0] = f2
+        cloth.imbalance = sqrt(f2 / cloth.load2) if cloth.load2 > 0.0 else 0.0
+
+
+def assemble(cloth):
+    """grad = dG/dx at pos, and levels[0].A its Hessian (every spring's axial stiffness in it,
+    as the sweeps have it); a fixed vertex's gradient is 0."""
+    pos = cloth.pos
+    pred = cloth.pred
+    g = cloth.grad
+    A = cloth.levels[0].A
+    mass = cloth.mass
+    fixed = cloth.fixed
+    n = cloth.n_verts
+    ws = cloth.w_scale
+    sqrt = math.sqrt
+    for t in range(27 * n):
+        A[t] = 0.0
+    for i in range(n):
+        w = mass[i] * ws
+        g[i + i] = w * (pos[i + i] - pred[i + i])
+        g[i + i + 1] = w * (pos[i + i + 1] - pred[i + i + 1])
+        o = (i * 9 + DIAG) * 3
+        A[o] = w
+        A[o + 2] = w
+    ea = cloth.edge_a
+    eb = cloth.edge_b
+    rest = cloth.rest
+    stiff = cloth.stiff
+    slot = cloth.slot
+    near2 = COARSE_NEAR * COARSE_NEAR
+    for e in range(cloth.n_edges):
+        a = ea[e]
+        b = eb[e]
+        dx = pos[b + b] - pos[a + a]
+        dy = pos[b + b + 1] - pos[a + a + 1]
+        L2 = dx * dx + dy * dy
+        r0 = rest[e]
+        if L2 < 1e-30 or L2 <= near2 * r0 * r0:
+            continue
+        L = sqrt(L2)
+        k = stiff[e]
+        nx = dx / L
+        ny = dy / L
+        if L > r0:
+            s = k * (L - r0)
+            g[a + a] -= s * nx
+            g[a + a + 1] -= s * ny
+            g[b + b] += s * nx
+            g[b + b + 1] += s * ny
+            t1 = k - k * r0 / L
+            t2 = k * r0 / L
+            kxx = t1 + t2 * nx * nx
+            kxy = t2 * nx * ny
+            kyy = t1 + t2 * ny * ny
+        else:
+            kxx = k * nx * nx
+            kxy = k * nx * ny
+            kyy = k * ny * ny
+        s = slot[e]
+        o = (a * 9 + DIAG) * 3
+        A[o] += kxx
+        A[o + 1] += kxy
+        A[o + 2] += kyy
+        o = (b * 9 + DIAG) * 3
+        A[o] += kxx
+        A[o + 1] += kxy
+        A[o + 2] += kyy
+        o = (a * 9 + s) * 3
+        A[o] -= kxx
+        A[o + 1] -= kxy
+        A[o + 2] -= kyy
+        o = (b * 9 + 8 - s) * 3
+        A[o] -= kxx
+        A[o + 1] -= kxy
+        A[o + 2] -= kyy
+    for h in range(cloth.n_gripped):
+        i = cloth.gripped[h]
+        ii = i + i
+        dx = cloth.aim[ii] - pos[ii]
+        dy = cloth.aim[ii + 1] - pos[ii + 1]
+        kh = cloth.grip_k[i]
+        d = math.sqrt(dx * dx + dy * dy)
+        s = cloth.grip_f[i] / d if kh * d > cloth.grip_f[i] else kh
+        g[ii] -= s * dx
+        g[ii + 1] -= s * dy
+        o = (i * 9 + DIAG) * 3
+        A[o] += kh
+        A[o + 2] += kh
+    for i in range(n):
+        if fixed[i] != 0:
+            g[i + i] = 0.0
+            g[i + i + 1] = 0.0
+
+
+def energy(cloth):
+    """out[1] = G(pos + alpha dirn) up to a constant, alpha = cloth.alpha (doubles pass through
+    the cloth: as arguments or a return value JS would box them, an allocation a call)."""
+    alpha = cloth.alpha
+    pos = cloth.pos
+    d = cloth.dirn
+    pred = cloth.pred
+    mass = cloth.mass
+    fixed = cloth.fixed
+    half_ws = 0.5 * cloth.w_scale
+    sqrt = math.sqrt
+    s = 0.0
+    for i in range(cloth.n_verts):
+        if fixed[i] != 0:
+            continue
+        ex = pos[i + i] + alpha * d[i + i] - pred[i + i]
+        ey = pos[i + i + 1] + alpha * d[i + i + 1] - pred[i + i + 1]
+        s += half_ws * mass[i] * (ex * ex + ey * ey)
+    ea = cloth.edge_a
+    eb = cloth.edge_b
+    rest = cloth.rest
+    stiff = cloth.stiff
+    for e in range(cloth.n_edges):
+        a = ea[e] + ea[e]
+        b = eb[e] + eb[e]
+        dx = pos[b] + alpha * d[b] - pos[a] - alpha * d[a]
+        dy = pos[b + 1] + alpha * d[b + 1] - pos[a + 1] - alpha * d[a + 1]
+        x = sqrt(dx * dx + dy * dy) - rest[e]
+        if x > 0.0:
+            s += 0.5 * stiff[e] * x * x
+    for h in range(cloth.n_gripped):
+        i = cloth.gripped[h]
+        ii = i + i
+        dx = pos[ii] + alpha * d[ii] - cloth.aim[ii]
+        dy = pos[ii + 1] + alpha * d[ii + 1] - cloth.aim[ii + 1]
+        r = sqrt(dx * dx + dy * dy)
+        kh = cloth.grip_k[i]
+        fh = cloth.grip_f[i]
+        if kh * r > fh:
+            s += fh * r - 0.5 * fh * fh / kh
+        else:
+            s += 0.5 * kh * r * r
+    cloth.out[1] = s
+
+
+def correct(cloth):
+    """One coarse-grid correction (see the module's comment)."""
+    levels = cloth.levels
+    fine = levels[0]
+    coarse = levels[1]
+    assemble(cloth)
+    if not cloth.mg_stale:
+        if cloth.mg_age >= REBUILD:
+            cloth.mg_stale = True
+        else:
+            lim = cloth.spacing * cloth.spacing
+            pos = cloth.pos
+            anchor = cloth.mg_anchor
+            for t in range(cloth.n_verts):
+                dx = pos[t + t] - anchor[t + t]
+                dy = pos[t + t + 1] - anchor[t + t + 1]
+                if dx * dx + dy * dy > lim:
+                    cloth.mg_stale = True
+                    break
+    if cloth.mg_stale:
+        galerkin(fine, coarse, cloth.fixed)
+        for l in range(2, len(levels)):
+            galerkin(levels[l - 1], levels[l], None)
+        factor_dense(levels[len(levels) - 1])
+        for t in range(2 * cloth.n_verts):
+            cloth.mg_anchor[t] = cloth.pos[t]
+        cloth.mg_stale = False
+        cloth.mg_age = 0
+        cloth.rebuilds += 1
+    cloth.mg_age += 1
+    b = cloth.coarse_b
+    restrict(fine, coarse, cloth.fixed, cloth.grad, b)
+    for t in range(2 * coarse.n):
+        b[t] = -b[t]
+    pcg(levels, 1, COARSE_STEPS, b, cloth.coarse_e)
+    d = cloth.dirn
+    prolong(fine, coarse, cloth.fixed, cloth.coarse_e, d)
+    slope = 0.0
+    g = cloth.grad
+    for t in range(2 * cloth.n_verts):
+        slope += g[t] * d[t]
+    cloth.corrected += 1
+    if not (slope < 0.0):
+        return
+    cloth.alpha = 0.0
+    energy(cloth)
+    g0 = cloth.out[1]
+    cloth.alpha = 1.0
+    energy(cloth)
+    g1 = cloth.out[1]
+    curv = g1 - g0 - slope
+    alpha = 1.0
+    if curv > 0.0:
+        alpha = -slope / (2.0 * curv)
+        if alpha > MOST_ALPHA:
+            alpha = MOST_ALPHA
+    ga = g1
+    if alpha != 1.0:
+        cloth.alpha = alpha
+        energy(cloth)
+        ga = cloth.out[1]
+    tries = 0
+    while ga > g0 + ARMIJO * alpha * slope and tries < 8:
+        alpha *= 0.5
+        cloth.alpha = alpha
+        energy(cloth)
+        ga = cloth.out[1]
+        tries += 1
+    if not (ga < g0):
+        return
+    pos = cloth.pos
+    for t in range(2 * cloth.n_verts):
+        pos[t] += alpha * d[t]

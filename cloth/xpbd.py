@@ -1,0 +1,92 @@
+"""XPBD on the membrane (Macklin, Mueller, Chentanez, "XPBD", 2016): the same step energy as
+the default solver (cloth/integrate.py), minimised by Gauss-Seidel sweeps over the edges, each
+a compliant constraint C = L - L0 with compliance 1 / k:
+    d_lambda = (-C - lambda / k) / (1 / w_a + 1 / w_b + 1 / k),  lambda <= 0 (tension only),
+    x_a -= n d_lambda / w_a,  x_b += n d_lambda / w_b
+(w: a vertex's inertia weight, m (1 + c h') / h'^2). Kept for comparison on the benchmark's
+front: with one sweep a substep, its stiff fabric is biased by a residual that falls as 1/S^2
+and grows as N^2 (it becomes accurate only once a substep resolves the fabric's stretch wave).
+A hand is one more constraint, its pull capped at its force."""
+
+import math
+
+from cloth.host import f64
+
+NAME = 'xpbd'
+LABEL = 'XPBD (small steps)'
+# substeps, iterations (sweeps a step), corrections (none)
+BUDGET = [16, 1, 0]
+
+
+def prepare(cloth):
+    if len(cloth.lam) < cloth.n_edges or len(cloth.lam) == 0:
+        cloth.lam = f64(cloth.n_edges if cloth.n_edges > 0 else 1)
+        cloth.hand_lam = f64(cloth.n_verts)
+
+
+def solve(cloth):
+    pos = cloth.pos
+    fixed = cloth.fixed
+    mass = cloth.mass
+    ea = cloth.edge_a
+    eb = cloth.edge_b
+    rest = cloth.rest
+    stiff = cloth.stiff
+    lam = cloth.lam
+    m = cloth.n_edges
+    ws = cloth.w_scale
+    sqrt = math.sqrt
+    # XPBD starts from the inertial target, where the constraints alone then pull it back.
+    pred = cloth.pred
+    for i in range(2 * cloth.n_verts):
+        pos[i] = pred[i]
+    for e in range(m):
+        lam[e] = 0.0
+    for h in range(cloth.n_gripped):
+        cloth.hand_lam[cloth.gripped[h]] = 0.0
+    for it in range(cloth.iterations):
+        for e in range(m):
+            a = ea[e]
+            b = eb[e]
+            wa = 0.0 if fixed[a] != 0 else 1.0 / (mass[a] * ws)
+            wb = 0.0 if fixed[b] != 0 else 1.0 / (mass[b] * ws)
+            if wa + wb == 0.0:
+                continue
+            ia = a + a
+            ib = b + b
+            dx = pos[ib] - pos[ia]
+            dy = pos[ib + 1] - pos[ia + 1]
+            d2 = dx * dx + dy * dy
+            if d2 < 1e-30:
+                continue
+            length = sqrt(d2)
+            alpha = 1.0 / stiff[e]
+            c = length - rest[e]
+            dl = (-c - alpha * lam[e]) / (wa + wb + alpha)
+            if lam[e] + dl > 0.0:
+                dl = -lam[e]
+            lam[e] += dl
+            s = dl / length
+            pos[ia] -= dx * s * wa
+            pos[ia + 1] -= dy * s * wa
+            pos[ib] += dx * s * wb
+            pos[ib + 1] += dy * s * wb
+        for h in range(cloth.n_gripped):
+            i = cloth.gripped[h]
+            ii = i + i
+            dx = pos[ii] - cloth.aim[ii]
+            dy = pos[ii + 1] - cloth.aim[ii + 1]
+            d = sqrt(dx * dx + dy * dy)
+            if d < 1e-15:
+                continue
+            w = 1.0 / (mass[i] * ws)
+            alpha = 1.0 / cloth.grip_k[i]
+            lo = -cloth.grip_f[i]
+            dl = (-d - alpha * cloth.hand_lam[i]) / (w + alpha)
+            if cloth.hand_lam[i] + dl < lo:
+                dl = lo - cloth.hand_lam[i]
+            cloth.hand_lam[i] += dl
+            s = dl / d * w
+            pos[ii] += dx * s
+            pos[ii + 1] += dy * s
+        cloth.sweeps += 1
