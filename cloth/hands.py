@@ -153,7 +153,9 @@ def regrip(cloth):
 def refix(cloth):
     """fixed = pinned and in no hand; inv_mass; which vertices fall freely (their piece has no
     fixed vertex and no hand: integrate.predict's guess); the weight the imbalance is measured
-    against; and the coarse operators are stale."""
+    against; and whether the coarse operators are stale (the fixed vertices or the grips are
+    not those they were made for: a hand that takes hold and lets go between two frames leaves
+    them as they were, and changes nothing at all)."""
     g2 = cloth.gravity_x * cloth.gravity_x + cloth.gravity_y * cloth.gravity_y
     if g2 < 9.81 * 9.81:
         g2 = 9.81 * 9.81     # in weak or no gravity, the imbalance is still against 1 g
@@ -176,9 +178,12 @@ def refix(cloth):
     for k in range(cloth.n_verts):
         if cloth.fixed[k] != 0 or cloth.grip[k] >= 0:
             held[cloth.piece[k]] = 1
+    changed = 0
     for k in range(cloth.n_verts):
         cloth.falling[k] = 1 - held[cloth.piece[k]]
-    cloth.mg_stale = True
+        if cloth.fixed[k] != cloth.mg_fixed[k] or cloth.grip[k] != cloth.mg_grip[k]:
+            changed = 1
+    cloth.mg_changed = changed
 
 
 def aim_hands(cloth):

@@ -70,6 +70,7 @@ def configure(cloth, scene):
     cloth.seed = scene.solver == SEED_SOLVER
     cloth.tear_limit[0] = (1.0 + scene.tear) * (1.0 + scene.tear)
     integrate.configure(cloth, scene)
+    cloth.mg_stale = True
     solver = REGISTRY[cloth.solver]
     solver[0].prepare(cloth)
     cloth.frame_stages = []
@@ -139,6 +140,7 @@ def broke(cloth):
     """Edges were marked broken: they go, and what follows from the new topology (the grips
     never reach across a cut; the coarse operators are stale)."""
     cloth.broken += topology.remove_marked(cloth)
+    cloth.mg_stale = True
     hands.regrip(cloth)
     hands.wake(cloth)
 

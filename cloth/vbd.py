@@ -51,14 +51,6 @@ REBUILD = 8
 # swinging far from its last shape needs them, while a hanging cloth settling stays below it
 # and pays nothing.
 MORE_ROUNDS = 4
-# The coarse operators take a slack spring's axial stiffness only while it is longer than this
-# share of its rest length: one about to pull (the sweeps take every spring's). With every
-# slack spring's, the coarse problem believes a slack region stiff, and its correction moves
-# it too little (measured: a stiff towel's swinging flap, a correction 0.6 of the way to the
-# line's minimum, the towel never settling).
-COARSE_NEAR = 0.0
-# Whether a vertex tries its exact local Newton step first (see sweep).
-LOCAL_SEARCH = True
 # Conjugate gradient steps on the coarse problem, each preconditioned by one V-cycle.
 COARSE_STEPS = 2
 # The line search along a correction: at most the correction itself (a step beyond it, which a
@@ -116,14 +108,7 @@ def solve(cloth):
 
 def sweep(cloth, forward, last):
     """One vertex block descent sweep. On the step's last (`last`), the force each vertex
-    found before its move is summed: cloth.imbalance, the solver's own residual.
-
-    Each vertex first tries the Newton step of its exact local energy (the pulling springs'
-    Hessian only: a slack spring resists nothing, so a vertex that only slack springs touch
-    goes straight to its target), and keeps it if it lowered that energy by ARMIJO of what the
-    step promised; else (a slack spring it made pull, or a pulling one turned) it takes the
-    step with every spring's axial stiffness in the Hessian, which overestimates the energy's
-    curvature along the step and so never overshoots."""
+    found before its move is summed: cloth.imbalance, the solver's own residual."""
     pos = cloth.pos
     pred = cloth.pred
     fixed = cloth.fixed
@@ -139,7 +124,6 @@ def sweep(cloth, forward, last):
     n = cloth.n_verts
     ws = cloth.w_scale
     contact = cloth.n_obstacles > 0
-    search = LOCAL_SEARCH
     sqrt = math.sqrt
     f2 = 0.0
     for t in range(n):
@@ -150,17 +134,11 @@ def sweep(cloth, forward, last):
         xi = pos[ii]
         yi = pos[ii + 1]
         w = mass[i] * ws
-        ex = pred[ii] - xi
-        ey = pred[ii + 1] - yi
-        fx = w * ex
-        fy = w * ey
-        e0 = 0.5 * w * (ex * ex + ey * ey)
+        fx = w * (pred[ii] - xi)
+        fy = w * (pred[ii + 1] - yi)
         hxx = w
         hxy = 0.0
         hyy = w
-        sxx = 0.0          # the slack springs' axial stiffness
-        sxy = 0.0
-        syy = 0.0
         for q in range(start[i], start[i + 1]):
             j = other[q] + other[q]
             dx = pos[j] - xi
@@ -168,14 +146,13 @@ def sweep(cloth, forward, last):
             L2 = dx * dx + dy * dy
             if L2 < 1e-30:
                 continue
-            r0 = arest[q]
             L = sqrt(L2)
             k = ak[q]
             nx = dx / L
             ny = dy / L
+            r0 = arest[q]
             if L > r0:
                 s = k * (L - r0)
-                e0 += 0.5 * s * (L - r0)
                 fx += s * nx
                 fy += s * ny
                 t1 = k - k * r0 / L
@@ -184,10 +161,9 @@ def sweep(cloth, forward, last):
                 hxy += t2 * nx * ny
                 hyy += t1 + t2 * ny * ny
             else:
-                sxx += k * nx * nx
-                sxy += k * nx * ny
-                syy += k * ny * ny
-        kh = 0.0
+                hxx += k * nx * nx
+                hxy += k * nx * ny
+                hyy += k * ny * ny
         if grip[i] >= 0:
             # A hand: a spring of stiffness grip_k to its aim whose pull stops growing at
             # grip_f (cloth/hands.py); its curvature is at most grip_k.
@@ -197,53 +173,17 @@ def sweep(cloth, forward, last):
             d = sqrt(dx * dx + dy * dy)
             if kh * d > grip_f[i]:
                 s = grip_f[i] / d
-                e0 += grip_f[i] * d - 0.5 * grip_f[i] * grip_f[i] / kh
             else:
                 s = kh
-                e0 += 0.5 * kh * d * d
             fx += s * dx
             fy += s * dy
             hxx += kh
             hyy += kh
         if last:
             f2 += fx * fx + fy * fy
-        ok = False
-        if search:
-            det = hxx * hyy - hxy * hxy
-            mx = (hyy * fx - hxy * fy) / det
-            my = (hxx * fy - hxy * fx) / det
-            x1 = xi + mx
-            y1 = yi + my
-            ex = pred[ii] - x1
-            ey = pred[ii + 1] - y1
-            e1 = 0.5 * w * (ex * ex + ey * ey)
-            for q in range(start[i], start[i + 1]):
-                j = other[q] + other[q]
-                dx = pos[j] - x1
-                dy = pos[j + 1] - y1
-                L = sqrt(dx * dx + dy * dy)
-                r0 = arest[q]
-                if L > r0:
-                    e1 += 0.5 * ak[q] * (L - r0) * (L - r0)
-            if kh > 0.0:
-                dx = aim[ii] - x1
-                dy = aim[ii + 1] - y1
-                d = sqrt(dx * dx + dy * dy)
-                if kh * d > grip_f[i]:
-                    e1 += grip_f[i] * d - 0.5 * grip_f[i] * grip_f[i] / kh
-                else:
-                    e1 += 0.5 * kh * d * d
-            if e1 <= e0 - ARMIJO * (fx * mx + fy * my):
-                pos[ii] = x1
-                pos[ii + 1] = y1
-                ok = True
-        if not ok:
-            hxx += sxx
-            hxy += sxy
-            hyy += syy
-            det = hxx * hyy - hxy * hxy
-            pos[ii] = xi + (hyy * fx - hxy * fy) / det
-            pos[ii + 1] = yi + (hxx * fy - hxy * fx) / det
+        det = hxx * hyy - hxy * hxy
+        pos[ii] = xi + (hyy * fx - hxy * fy) / det
+        pos[ii + 1] = yi + (hxx * fy - hxy * fx) / det
         if contact:
             keep_out(cloth, i)
     cloth.sweeps += 1
@@ -278,7 +218,6 @@ def assemble(cloth):
     rest = cloth.rest
     stiff = cloth.stiff
     slot = cloth.slot
-    near2 = COARSE_NEAR * COARSE_NEAR
     for e in range(cloth.n_edges):
         a = ea[e]
         b = eb[e]
@@ -286,7 +225,7 @@ def assemble(cloth):
         dy = pos[b + b + 1] - pos[a + a + 1]
         L2 = dx * dx + dy * dy
         r0 = rest[e]
-        if L2 < 1e-30 or L2 <= near2 * r0 * r0:
+        if L2 < 1e-30:
             continue
         L = sqrt(L2)
         k = stiff[e]
@@ -394,6 +333,8 @@ def correct(cloth):
     fine = levels[0]
     coarse = levels[1]
     assemble(cloth)
+    if cloth.mg_changed != 0:
+        cloth.mg_stale = True
     if not cloth.mg_stale:
         if cloth.mg_age >= REBUILD:
             cloth.mg_stale = True
@@ -414,7 +355,11 @@ def correct(cloth):
         factor_dense(levels[len(levels) - 1])
         for t in range(2 * cloth.n_verts):
             cloth.mg_anchor[t] = cloth.pos[t]
+        for t in range(cloth.n_verts):
+            cloth.mg_fixed[t] = cloth.fixed[t]
+            cloth.mg_grip[t] = cloth.grip[t]
         cloth.mg_stale = False
+        cloth.mg_changed = 0
         cloth.mg_age = 0
         cloth.rebuilds += 1
     cloth.mg_age += 1
