@@ -97,11 +97,16 @@ def finish(cloth):
     inv = 1.0 / cloth.h
     hx = 0.5 * cloth.gravity_x * cloth.h
     hy = 0.5 * cloth.gravity_y * cloth.h
+    grip = cloth.grip
     for k in range(cloth.n_verts):
         i = k + k
         if fixed[k] != 0:
             vel[i] = 0.0
             vel[i + 1] = 0.0
-            continue
-        vel[i] = (pos[i] - prev[i]) * inv + hx
-        vel[i + 1] = (pos[i + 1] - prev[i + 1]) * inv + hy
+        elif grip[k] >= 0:
+            # moved where the hand is: the hand's velocity
+            vel[i] = (pos[i] - prev[i]) * inv
+            vel[i + 1] = (pos[i + 1] - prev[i + 1]) * inv
+        else:
+            vel[i] = (pos[i] - prev[i]) * inv + hx
+            vel[i + 1] = (pos[i + 1] - prev[i + 1]) * inv + hy

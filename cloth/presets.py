@@ -24,8 +24,12 @@ CLAMP = HAND_RADIUS
 # there at once: a clamp moved 0.3 m in one frame stretches the cloth by as much.
 CORNER_SPAN = 0.8
 CARRY_FRAMES = 60
-# Towel on a peg: the peg's radius.
-PEG = 0.025
+# Towel on a peg: the peg, a bar this share of the towel's width and PEG_HEIGHT tall, whose
+# underside holds the middle of the towel's top edge. (A towel hung from a point of its edge,
+# in the plane, folds to a strip under that point: nothing out of the plane holds its sides
+# apart, and a tension-only cloth crumples sideways at no cost.)
+PEG = 0.6
+PEG_HEIGHT = 0.04
 
 #          name        label               cols rows size (m)
 PRESETS = [['curtain', 'Curtain', 40, 30, 2.0],
@@ -76,7 +80,7 @@ def clamps(name, cols, rows, spacing):
                 left.append(right[i])
         return left
     if name == 'towel':
-        return top_row_within(cols, spacing, 0.5 * w - CLAMP, 0.5 * w + CLAMP)
+        return top_row_within(cols, spacing, 0.5 * w * (1.0 - PEG), 0.5 * w * (1.0 + PEG))
     if name == 'chain':
         return top_row_within(cols, spacing, 0.0, CLAMP)
     if name == 'flag':
@@ -105,7 +109,8 @@ def preset_scene(name, cols, rows):
         actions.append({'frame': CARRY_FRAMES, 'op': 'release', 'vertex': k})
         scene['actions'] = actions
     if name == 'towel':
-        scene['obstacles'] = [{'circle': [0.5 * w, PEG, PEG], 'friction': 0.5}]
+        scene['obstacles'] = [{'box': [0.5 * w * (1.0 - PEG), 0.0, 0.5 * w * (1.0 + PEG), PEG_HEIGHT],
+                               'friction': 0.5}]
     if name == 'tearable':
         scene['tear'] = TEARABLE_STRAIN
     if name == 'flag':
@@ -129,7 +134,7 @@ def preset_view(name, cols, rows):
     ht = (rows - 1) * h
     if name == 'chain':
         r = w + ht
-        return [-r, r, -r, 0.15 * r]
+        return [-1.1 * r, 1.1 * r, -1.2 * r, 0.15 * r]
     if name == 'towel':
         big = max(w, ht)
         return [-0.1 * big, w + 0.1 * big, -ht - 0.35 * big, 0.15 * big]

@@ -272,10 +272,12 @@ def read_legacy(obj, s):
             boolean(obj[key], key)
             s.legacy.append([key, 'left out (every cell has both diagonals)' if key == 'shear'
                              else 'left out (the membrane needs none)'])
-    for key in ['tolerance', 'max_speed']:
-        if has_key(obj, key):
-            number(obj[key], key, 0.0, 1e6, False, 'a number from 0 to 1000000')
-            s.legacy.append([key, 'left out'])
+    if has_key(obj, 'tolerance'):
+        number(obj['tolerance'], 'tolerance', 0.0, 1.0, False, 'from 0 to 1 (a relative strain)')
+        s.legacy.append(['tolerance', 'left out'])
+    if has_key(obj, 'max_speed'):
+        number(obj['max_speed'], 'max_speed', 0.0, 1e6, True, 'in (0, 1000000] m/s')
+        s.legacy.append(['max_speed', 'left out (no speed limit)'])
     if has_key(obj, 'compliance'):
         c = number(obj['compliance'], 'compliance', 0.0, 1e3, False, 'from 0 to 1000 m/N')
         if c > 0.0 and not has_key(obj, 'stretch'):

@@ -101,7 +101,6 @@ class Cloth:
         self.sweeps = 0
         self.corrected = 0
         self.rebuilds = 0
-        self.extra_rounds = 0
         # sleep (cloth/sleep.py)
         self.asleep = False
         self.still_frames = 0

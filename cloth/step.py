@@ -4,7 +4,7 @@
             then `substeps` steps of dt / substeps, each:
                 aim the hands  ->  move the obstacles (if any)  ->  predict  ->  solve
                 ->  push out of obstacles (if any)  ->  finish (velocities)
-                ->  tear (if the scene tears)
+                ->  damp the grips  ->  tear (if the scene tears)
             then: hands and obstacles arrive where they were going, and sleep (if on)
 
 The solver (cloth/solvers.py) supplies predict, solve and finish: the integrator and the
@@ -84,6 +84,7 @@ def configure(cloth, scene):
     if cloth.n_obstacles > 0:
         cloth.stages.append(obstacles.push_out)
     cloth.stages.append(solver[3])
+    cloth.stages.append(hands.damp_hands)
     if scene.tear > 0.0:
         cloth.stages.append(tear)
     cloth.after_stages = [hands.hands_arrived]

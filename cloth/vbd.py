@@ -36,7 +36,6 @@ import math
 from cloth.host import f64
 from cloth.multigrid import DIAG, hierarchy, galerkin, restrict, prolong, pcg, factor_dense
 from cloth.contact import keep_out
-from cloth.integrate import UNBALANCED
 
 NAME = 'vbd'
 LABEL = 'Vertex descent + multigrid'
@@ -46,11 +45,6 @@ BUDGET = [1, 5, 1]
 # was, and a rebuild costs about six sweeps (measured at 60x60); a cloth that moved more than a
 # spacing since gets new ones at once.
 REBUILD = 8
-# A step whose forces are still far from balance after its budget (integrate.UNBALANCED) gets
-# another round of a correction and its sweeps, up to MORE_ROUNDS of them: a stiff cloth
-# swinging far from its last shape needs them, while a hanging cloth settling stays below it
-# and pays nothing.
-MORE_ROUNDS = 4
 # Conjugate gradient steps on the coarse problem, each preconditioned by one V-cycle.
 COARSE_STEPS = 2
 # The line search along a correction: at most the correction itself (a step beyond it, which a
@@ -77,9 +71,17 @@ def prepare(cloth):
 
 
 def solve(cloth):
-    """Minimise G from the guess `predict` left in pos: the budget (iterations // 2 sweeps,
-    the corrections, the rest of the sweeps), then more rounds while far from balance."""
+    """Minimise G from the guess `predict` left in pos: iterations // 2 sweeps, the
+    corrections (a sweep between two), the rest of the sweeps. The budget is the scene's: a
+    step far from balance is not given more (its cost would jump when a person drags hard);
+    the integrator takes the next one by backward Euler instead (integrate.UNBALANCED)."""
     sweeps = cloth.iterations
+    if sweeps == 0:
+        # No iterations, no solve: every free vertex goes where its inertia and gravity take it.
+        pos = cloth.pos
+        for t in range(2 * cloth.n_verts):
+            pos[t] = cloth.pred[t]
+        return
     first = sweeps // 2
     forward = True
     for s in range(first):
@@ -95,15 +97,6 @@ def solve(cloth):
     for s in range(first, sweeps):
         sweep(cloth, forward, s == sweeps - 1)
         forward = not forward
-    rounds = 0
-    while cloth.imbalance > UNBALANCED and rounds < MORE_ROUNDS and sweeps > 0:
-        if coarse and cloth.corrections > 0:
-            correct(cloth)
-        for s in range(sweeps):
-            sweep(cloth, forward, s == sweeps - 1)
-            forward = not forward
-        rounds += 1
-        cloth.extra_rounds += 1
 
 
 def sweep(cloth, forward, last):

@@ -20,7 +20,7 @@ window.clothUI = (function () {
   }
 
   const TEXT_INPUTS = { text: 1, number: 1, search: 1, email: 1, url: 1, tel: 1, password: 1 };
-  const LEGEND_TOP = { max: '(top: max)', high: '(top: 99% of edges)', floor: '(top: floor)', fixed: '(top: fixed)' };
+  const LEGEND_TOP = { max: '(top: max)', high: '(top: 99%)', floor: '(top: floor)', fixed: '(top: fixed)' };
   const ARROWS = { ArrowLeft: 1, ArrowRight: 1, ArrowUp: 1, ArrowDown: 1 };
 
   // Does the focused element use this key itself (see the keydown handler)?
