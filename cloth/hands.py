@@ -1,13 +1,15 @@
 """Hands and pins.
 
 A hand holds a patch, with a finite force. It grips the vertex a person took hold of and the
-vertices within HAND_RADIUS of it along the cloth, each by a stiff spring to where the hand
-holds it (the hand's position plus the vertex's offset from the held one when it took hold):
-a force of HAND_STIFFNESS / count per metre of distance, capped at HAND_FORCE / count (a Huber
-spring: convex, so the step's energy stays convex; cloth/vbd.py). These springs are part of
-the fabric's step, solved with it: within reach the held vertex ends every step where the hand
-is (HAND_FORCE / HAND_STIFFNESS = 1 mm at full force), and beyond it the hand pulls with
-HAND_FORCE and the fabric stretches as far as that force takes it, no farther. Why a patch: a
+vertices within HAND_RADIUS of it along the cloth, each by a spring to where the hand holds it
+(the hand's position plus the vertex's offset from the held one when it took hold) that pulls
+with k d / sqrt(1 + (d / r)^2): k = HAND_STIFFNESS / count near the hand, levelling off at
+f = HAND_FORCE / count far from it (r = f / k; a pseudo-Huber energy, f r (sqrt(1 + (d/r)^2)
+- 1): convex and smooth, so the step's energy stays convex and its Newton steps stay good,
+cloth/vbd.py). These springs are part of the fabric's step, solved with it: within reach the
+held vertex ends every step where the hand is (1 mm off while it pulls with a fifth of its
+force), and beyond it the hand pulls with up to HAND_FORCE and the fabric stretches as far as
+that force takes it, no farther. Why a patch: a
 point force strains a 2D continuum as 1 / r, so a grid's edge at a point grip strains more the
 finer the grid; a patch of fixed size does not (cloth/fabrics.py).
 
@@ -16,6 +18,8 @@ its radius (a clamp and the cloth at it), moving them with the same force; letti
 the pins fixed where they are. Letting go removes the springs and nothing else: the cloth keeps
 the motion it has, and the stretch the hand left returns as the fabric's own motion.
 """
+
+import math
 
 from cloth.values import SceneError
 from cloth.topology import walk_grip, label_pieces
@@ -27,14 +31,17 @@ from cloth.integrate import rest_at
 HAND_FORCE = 20.0
 # A hand's grip: the vertices within this distance of the held one along the cloth.
 HAND_RADIUS = 0.02
-# Its springs' stiffness, all together: at full force the held vertex is 1 mm off the hand.
-HAND_STIFFNESS = HAND_FORCE / 0.001
-# A grip is damped: the motion of the gripped vertices relative to the hand loses this much of
-# itself per second (like still air's damping, v_rel / (1 + c h) a step, so at any step size
-# it only takes energy away). Without it a hand pulling at its full force is a constant pull
-# toward the pointer, and a free vertex held by it orbits the pointer for good under the
-# lightly damped solvers (measured: XPBD, a 2x1 cloth's vertex 0.4-1.25 m off after 10 s).
-HAND_DAMPING = 20.0
+# Its springs' stiffness near the hand, all together: the pull is HAND_STIFFNESS times the
+# distance up to about HAND_FORCE / HAND_STIFFNESS = 5 mm (the vertex is 1 mm off the hand
+# while it pulls with a fifth of its force), and levels off at HAND_FORCE beyond.
+HAND_STIFFNESS = HAND_FORCE / 0.005
+# A grip is damped: each gripped vertex's motion relative to the hand loses this much of itself
+# per second, as a damper in the step (implicit, like still air's damping: it only ever takes
+# energy away). A pull at the hand's full force is a constant pull toward the pointer, and
+# without it a free vertex held so orbits the pointer for good under the lightly damped
+# solvers (measured: XPBD, a 2x1 cloth's vertex 0.4-1.25 m off after 10 s). Proportional to
+# the gripped mass, it adds at most 5 s^-1 x 0.03 kg x 5 m/s = 1 N to a fast flick's pull.
+HAND_DAMPING = 5.0
 
 
 def check_vertex(cloth, k):
@@ -206,19 +213,33 @@ def aim_hands(cloth):
         cloth.aim[v + v + 1] = y + cloth.offset[v + v + 1]
 
 
-def damp_hands(cloth):
-    """After a step's velocities: each gripped vertex's velocity relative to its hand's (the
-    hand moves at a constant velocity over the frame) loses HAND_DAMPING of itself per second."""
-    keep = 1.0 / (1.0 + HAND_DAMPING * cloth.h)
+def hold(cloth):
+    """After predict: each gripped vertex's inertial target with the grip's damper in it,
+    v+ (1 + (c + b) h') = u + h' (f / m + b v_hand), b = HAND_DAMPING (integrate.py's form with
+    the damper's pull toward the hand's velocity; u = 4/3 v - 1/3 v-, or v under backward
+    Euler), and the factor its inertia weight takes (cloth.grip_w: the solvers multiply by it)."""
+    if cloth.n_gripped == 0:
+        return
+    hp = cloth.h_bdf
+    keep = cloth.keep
+    held = 1.0 / (1.0 + (cloth.damping + HAND_DAMPING) * hp)
+    cloth.grip_w = keep / held
+    gx = keep * cloth.gravity_x * hp * hp
+    gy = keep * cloth.gravity_y * hp * hp
     inv_dt = 1.0 / cloth.dt
     for h in range(cloth.n_gripped):
         v = cloth.gripped[h]
+        if cloth.fixed[v] != 0:
+            continue
         k = cloth.grip[v]
         kk = k + k
         hx = (cloth.target[kk] - cloth.hand_from[kk]) * inv_dt
         hy = (cloth.target[kk + 1] - cloth.hand_from[kk + 1]) * inv_dt
-        cloth.vel[v + v] = hx + (cloth.vel[v + v] - hx) * keep
-        cloth.vel[v + v + 1] = hy + (cloth.vel[v + v + 1] - hy) * keep
+        i = v + v
+        ux = (cloth.pred[i] - cloth.base[i] - gx) / (keep * hp)
+        uy = (cloth.pred[i + 1] - cloth.base[i + 1] - gy) / (keep * hp)
+        cloth.pred[i] = cloth.base[i] + hp * held * (ux + hp * HAND_DAMPING * hx) + gx * held / keep
+        cloth.pred[i + 1] = cloth.base[i + 1] + hp * held * (uy + hp * HAND_DAMPING * hy) + gy * held / keep
 
 
 def hands_arrived(cloth):

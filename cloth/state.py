@@ -71,6 +71,7 @@ class Cloth:
         self.aim = f64(2 * n)
         self.grip_k = f64(n)
         self.grip_f = f64(n)
+        self.grip_w = 1.0         # a gripped vertex's inertia weight factor (hands.hold)
         self.gripped = i32(n)     # the vertices some hand grips
         self.n_gripped = 0
         self.grip_dist = f64(n)   # work arrays of a grip's walk

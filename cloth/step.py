@@ -2,9 +2,10 @@
 
     frame:  the air (if it moves)
             then `substeps` steps of dt / substeps, each:
-                aim the hands  ->  move the obstacles (if any)  ->  predict  ->  solve
+                aim the hands  ->  move the obstacles (if any)  ->  predict
+                ->  the grips' damping (the implicit solvers)  ->  solve
                 ->  push out of obstacles (if any)  ->  finish (velocities)
-                ->  damp the grips  ->  tear (if the scene tears)
+                ->  tear (if the scene tears)
             then: hands and obstacles arrive where they were going, and sleep (if on)
 
 The solver (cloth/solvers.py) supplies predict, solve and finish: the integrator and the
@@ -80,11 +81,12 @@ def configure(cloth, scene):
     if cloth.n_obstacles > 0:
         cloth.stages.append(obstacles.advance)
     cloth.stages.append(solver[1])
+    if solver[1] == integrate.predict:
+        cloth.stages.append(hands.hold)
     cloth.stages.append(solver[2])
     if cloth.n_obstacles > 0:
         cloth.stages.append(obstacles.push_out)
     cloth.stages.append(solver[3])
-    cloth.stages.append(hands.damp_hands)
     if scene.tear > 0.0:
         cloth.stages.append(tear)
     cloth.after_stages = [hands.hands_arrived]

@@ -127,6 +127,8 @@ def sweep(cloth, forward, last):
         xi = pos[ii]
         yi = pos[ii + 1]
         w = mass[i] * ws
+        if grip[i] >= 0:
+            w *= cloth.grip_w
         fx = w * (pred[ii] - xi)
         fy = w * (pred[ii + 1] - yi)
         hxx = w
@@ -157,26 +159,57 @@ def sweep(cloth, forward, last):
                 hxx += k * nx * nx
                 hxy += k * nx * ny
                 hyy += k * ny * ny
+        pulled = False
+        reach = 0.0
         if grip[i] >= 0:
-            # A hand: a spring of stiffness grip_k to its aim whose pull stops growing at
-            # grip_f (cloth/hands.py); its curvature is at most grip_k.
+            # A hand: its pull k (aim - x) / s, s = sqrt(1 + (d / r)^2), r = f / k, grows as a
+            # spring's near the aim and levels off at f (cloth/hands.py). Its curvature, k / s^3
+            # along the pull and k / s across it, is small when it pulls hard from afar: a far
+            # hand drags its vertex as hard as its force can (with k along the pull a hand moved
+            # its vertex 1 mm a sweep, and could not catch a swinging cloth); a step that would
+            # carry the vertex within r of the aim, where the curvature climbs to k, stops at r
+            # (below), and within r the Hessian takes k, the most it reaches.
             dx = aim[ii] - xi
             dy = aim[ii + 1] - yi
             kh = grip_k[i]
-            d = sqrt(dx * dx + dy * dy)
-            if kh * d > grip_f[i]:
-                s = grip_f[i] / d
-            else:
-                s = kh
+            reach = grip_f[i] / kh
+            d2 = dx * dx + dy * dy
+            sh = sqrt(1.0 + d2 / (reach * reach))
+            s = kh / sh
             fx += s * dx
             fy += s * dy
-            hxx += kh
-            hyy += kh
+            if d2 > reach * reach:
+                d = sqrt(d2)
+                nx = dx / d
+                ny = dy / d
+                along = s / (sh * sh)
+                hxx += s + (along - s) * nx * nx
+                hxy += (along - s) * nx * ny
+                hyy += s + (along - s) * ny * ny
+                pulled = True
+            else:
+                hxx += kh
+                hyy += kh
         if last:
             f2 += fx * fx + fy * fy
         det = hxx * hyy - hxy * hxy
-        pos[ii] = xi + (hyy * fx - hxy * fy) / det
-        pos[ii + 1] = yi + (hxx * fy - hxy * fx) / det
+        mx = (hyy * fx - hxy * fy) / det
+        my = (hxx * fy - hxy * fx) / det
+        if pulled:
+            # Within r of the aim? Then only as far as r.
+            ax = aim[ii] - xi - mx
+            ay = aim[ii + 1] - yi - my
+            if ax * ax + ay * ay < reach * reach:
+                bx = aim[ii] - xi
+                by = aim[ii + 1] - yi
+                mm = mx * mx + my * my
+                bm = bx * mx + by * my
+                disc = bm * bm - mm * (bx * bx + by * by - reach * reach)
+                t = (bm - sqrt(disc)) / mm if disc > 0.0 else 0.0
+                mx *= t
+                my *= t
+        pos[ii] = xi + mx
+        pos[ii + 1] = yi + my
         if contact:
             keep_out(cloth, i)
     cloth.sweeps += 1
@@ -201,6 +234,8 @@ def assemble(cloth):
         A[t] = 0.0
     for i in range(n):
         w = mass[i] * ws
+        if cloth.grip[i] >= 0:
+            w *= cloth.grip_w
         g[i + i] = w * (pos[i + i] - pred[i + i])
         g[i + i + 1] = w * (pos[i + i + 1] - pred[i + i + 1])
         o = (i * 9 + DIAG) * 3
@@ -262,8 +297,8 @@ def assemble(cloth):
         dx = cloth.aim[ii] - pos[ii]
         dy = cloth.aim[ii + 1] - pos[ii + 1]
         kh = cloth.grip_k[i]
-        d = math.sqrt(dx * dx + dy * dy)
-        s = cloth.grip_f[i] / d if kh * d > cloth.grip_f[i] else kh
+        reach = cloth.grip_f[i] / kh
+        s = kh / math.sqrt(1.0 + (dx * dx + dy * dy) / (reach * reach))
         g[ii] -= s * dx
         g[ii + 1] -= s * dy
         o = (i * 9 + DIAG) * 3
@@ -292,7 +327,10 @@ def energy(cloth):
             continue
         ex = pos[i + i] + alpha * d[i + i] - pred[i + i]
         ey = pos[i + i + 1] + alpha * d[i + i + 1] - pred[i + i + 1]
-        s += half_ws * mass[i] * (ex * ex + ey * ey)
+        w = half_ws * mass[i]
+        if cloth.grip[i] >= 0:
+            w *= cloth.grip_w
+        s += w * (ex * ex + ey * ey)
     ea = cloth.edge_a
     eb = cloth.edge_b
     rest = cloth.rest
@@ -310,13 +348,9 @@ def energy(cloth):
         ii = i + i
         dx = pos[ii] + alpha * d[ii] - cloth.aim[ii]
         dy = pos[ii + 1] + alpha * d[ii + 1] - cloth.aim[ii + 1]
-        r = sqrt(dx * dx + dy * dy)
-        kh = cloth.grip_k[i]
         fh = cloth.grip_f[i]
-        if kh * r > fh:
-            s += fh * r - 0.5 * fh * fh / kh
-        else:
-            s += 0.5 * kh * r * r
+        reach = fh / cloth.grip_k[i]
+        s += fh * reach * (sqrt(1.0 + (dx * dx + dy * dy) / (reach * reach)) - 1.0)
     cloth.out[1] = s
 
 

@@ -33,6 +33,7 @@ def solve(cloth):
     rest = cloth.rest
     stiff = cloth.stiff
     lam = cloth.lam
+    grip = cloth.grip
     m = cloth.n_edges
     ws = cloth.w_scale
     sqrt = math.sqrt
@@ -48,8 +49,8 @@ def solve(cloth):
         for e in range(m):
             a = ea[e]
             b = eb[e]
-            wa = 0.0 if fixed[a] != 0 else 1.0 / (mass[a] * ws)
-            wb = 0.0 if fixed[b] != 0 else 1.0 / (mass[b] * ws)
+            wa = 0.0 if fixed[a] != 0 else 1.0 / (mass[a] * ws * (cloth.grip_w if grip[a] >= 0 else 1.0))
+            wb = 0.0 if fixed[b] != 0 else 1.0 / (mass[b] * ws * (cloth.grip_w if grip[b] >= 0 else 1.0))
             if wa + wb == 0.0:
                 continue
             ia = a + a
@@ -79,7 +80,7 @@ def solve(cloth):
             d = sqrt(dx * dx + dy * dy)
             if d < 1e-15:
                 continue
-            w = 1.0 / (mass[i] * ws)
+            w = 1.0 / (mass[i] * ws * cloth.grip_w)
             alpha = 1.0 / cloth.grip_k[i]
             lo = -cloth.grip_f[i]
             dl = (-d - alpha * cloth.hand_lam[i]) / (w + alpha)

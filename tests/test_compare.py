@@ -10,13 +10,23 @@ from pathlib import Path
 import pytest
 
 from cloth.api import run
-from cloth.scene import SceneError
+from cloth.keys import MODEL, solver_index
+from cloth.solvers import SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
+from cloth.values import SceneError
 
 ROOT = Path(__file__).resolve().parent.parent
-BASE = {'cols': 6, 'rows': 5, 'spacing': 0.1, 'pins': [0, 5], 'damping': 1,
+BASE = {'model': MODEL, 'cols': 6, 'rows': 5, 'spacing': 0.1, 'pins': [0, 5], 'damping': 1,
         'actions': [{'frame': 2, 'op': 'grab', 'vertex': 27, 'to': [0.3, -0.6]},
                     {'frame': 9, 'op': 'release', 'vertex': 27}]}
-PAIR = [{'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}, {'solver': 'xpbd', 'substeps': 8, 'iterations': 1}]
+
+
+def own_steps(solver):
+    b = SOLVER_BUDGETS[solver_index(solver)]
+    return {'solver': solver, 'substeps': b[0], 'iterations': b[1]}
+
+
+# The seed's solver beside the default, each with its own declared steps.
+PAIR = [own_steps(SEED_SOLVER), own_steps(DEFAULT_SOLVER)]
 
 
 def text(**keys):
@@ -32,16 +42,24 @@ def test_the_physics_ignores_compare_but_for_a_panel():
 
 
 def test_a_panel_keeps_the_scenes_script_and_grid():
-    three = PAIR + [{'shear': True, 'damping': 4, 'tolerance': 0}]
+    own = {'shear': 10, 'stretch': 2000, 'density': 0.4, 'damping': 4, 'corrections': 2}
+    three = PAIR + [own]
     out = json.loads(run(text(compare=three), 15, False, 2))
-    assert out == json.loads(run(text(shear=True, damping=4, tolerance=0), 15))
-    assert len(out['edges']) > len(json.loads(run(text(), 1))['edges'])   # the diagonals
+    assert out == json.loads(run(text(**own), 15))
+    assert out['edges'] == json.loads(run(text(), 1))['edges']             # the scene's grid
+    # the script's hand is in it: without the script the panel's cloth is elsewhere
+    bare = dict(BASE, **own)
+    del bare['actions']
+    assert out['positions'] != json.loads(run(json.dumps(bare), 15))['positions']
 
 
 @pytest.mark.parametrize('compare, message', [
     ([{}], r'^compare: must be a list of 2 to 4'),
     ([{}] * 5, r'^compare: must be a list of 2 to 4'),
     ({'solver': 'xpbd'}, r'^compare: must be a list'),
+    ([{}, {'tethers': False}], r'^compare\[1\]\.tethers: not a key a panel can have'),
+    ([{}, {'shear': True}], r'^compare\[1\]\.shear: must be a number'),
+    ([{'model': 1}, {}], r'^compare\[0\]\.model: not a key a panel can have'),
     ([{}, 3], r'^compare\[1\]: must be an object'),
     ([{}, {'cols': 3}], r'^compare\[1\]\.cols: not a key a panel can have'),
     ([{}, {'gravity': [0, 1]}], r'^compare\[1\]\.gravity: not a key a panel can have'),

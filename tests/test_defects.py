@@ -14,15 +14,20 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from cloth.api import load, run, set_settings
-from cloth.scene import SceneError, MAX_DEPTH, parse_scene, stable_sort_by_frame
-from cloth.sim import frame, grab, pin
+from cloth.actions import stable_sort_by_frame
+from cloth.hands import grab, pin
 from cloth.host import too_deep
+from cloth.keys import MAX_DEPTH, MODEL, spec, solver_index
+from cloth.scene import parse_scene
+from cloth.solvers import SOLVERS, DEFAULT_SOLVER
+from cloth.step import frame
+from cloth.values import SceneError
 
 import os
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-GOOD = {'cols': 4, 'rows': 3, 'spacing': 0.1, 'pins': [0, 3]}
+GOOD = {'model': MODEL, 'cols': 4, 'rows': 3, 'spacing': 0.1, 'pins': [0, 3]}
 
 
 def cli(*args, stdin=None):
@@ -157,7 +162,7 @@ def peak_kib(text, frames, streamed):
 def test_trace_memory_stays_that_of_one_frame():
     """Ten times the trace is not ten times the memory: streamed, 2e5 points cost what 2e4
     do; held in memory (the control, so that the test can fail) they cost some 30 MB more."""
-    text = json.dumps({'cols': 5, 'rows': 2, 'spacing': 0.1, 'pins': [0, 4],
+    text = json.dumps({'model': MODEL, 'cols': 5, 'rows': 2, 'spacing': 0.1, 'pins': [0, 4],
                        'solver': 'jakobsen', 'iterations': 1})
     small, large = 2000, 20000
     streamed = peak_kib(text, large, True) - peak_kib(text, small, True)
@@ -178,8 +183,9 @@ def running(scene, frames=30):
 
 
 @pytest.mark.parametrize('change', [{'gravity': [0, -3]}, {'iterations': 7}, {'substeps': 3},
-                                    {'solver': 'jakobsen'}, {'damping': 4}, {'tethers': False},
-                                    {'sleep': False}, {'tolerance': 0}])
+                                    {'solver': 'jakobsen'}, {'solver': 'xpbd'}, {'damping': 4},
+                                    {'stretch': 2000}, {'shear': 10}, {'density': 0.4},
+                                    {'corrections': 3}, {'sleep': False}, {'tear': 0.5}])
 def test_a_setting_applies_to_the_running_cloth_and_keeps_its_state(change):
     scene = dict(GOOD, damping=1)
     cloth = running(scene)
@@ -197,14 +203,20 @@ def test_a_setting_applies_to_the_running_cloth_and_keeps_its_state(change):
     assert math.dist(cloth.pos[18:20], [0.1, -0.2]) < 1e-3
 
 
-def test_changing_substeps_keeps_the_velocity():
-    """Verlet's velocity is pos - prev over one step: a new step size must rescale it."""
-    scene = {'cols': 1, 'rows': 1, 'spacing': 1, 'gravity': [0, 0], 'damping': 0}
+@pytest.mark.parametrize('solver', SOLVERS)
+def test_changing_substeps_keeps_the_velocity(solver):
+    """A step's history (Verlet's x*, BDF2's last position and velocity) is per step: a new
+    step size must carry the velocity over, not the last step's displacement."""
+    scene = {'model': MODEL, 'cols': 1, 'rows': 1, 'spacing': 1, 'gravity': [0, 0], 'damping': 0,
+             'solver': solver}
     cloth = load(json.dumps(scene))
-    cloth.prev[0] = -0.01                       # a speed along x, no forces
+    # A speed along x, no forces: the history of that motion.
+    cloth.vel[0] = cloth.vel_prev[0] = 0.6
+    cloth.prev[0] = cloth.pos[0] - 0.6 * cloth.h
     x0 = cloth.pos[0]
     frame(cloth)
     per_frame = cloth.pos[0] - x0
+    assert per_frame == pytest.approx(0.6 * cloth.dt, rel=1e-12)
     for substeps in (7, 1, 16):
         set_settings(cloth, json.dumps({'substeps': substeps}))
         x1 = cloth.pos[0]
@@ -215,18 +227,22 @@ def test_changing_substeps_keeps_the_velocity():
 def test_a_grid_change_is_refused_and_changes_nothing():
     cloth = running(GOOD)
     pos = list(cloth.pos)
-    for change in [{'cols': 5}, {'spacing': 0.2}, {'shear': True}, {'iterations': -1},
-                   {'solver': 'magic'}, {'pins': [1]}, {'actions': []}, {'frames': 3}]:
+    # The default solver's own iterations (cloth/solvers.py), which no refused change touches.
+    iterations = spec('iterations').by_solver[solver_index(DEFAULT_SOLVER)]
+    assert cloth.scene.iterations == cloth.iterations == iterations
+    for change in [{'cols': 5}, {'rows': 4}, {'spacing': 0.2}, {'shear': True}, {'iterations': -1},
+                   {'solver': 'magic'}, {'pins': [1]}, {'actions': []}, {'frames': 3},
+                   {'model': 1}, {'tethers': False}, {'tolerance': 0}]:
         with pytest.raises(SceneError):
             set_settings(cloth, json.dumps(change))
-        assert list(cloth.pos) == pos and cloth.scene.iterations == 1
+        assert list(cloth.pos) == pos and cloth.scene.iterations == cloth.iterations == iterations
 
 
 # ---- found when the fixes of #12 were tried as a new user would ---------------------------------
 
 @pytest.mark.parametrize('dt', [1e-300, 1e-155, 1e-7, 0, -1])
 def test_a_step_too_small_to_square_is_refused(dt):
-    """dt 1e-300 passed validation, made h^2 zero and compliance / h^2 a ZeroDivisionError in
+    """dt 1e-300 passed validation, made h^2 zero and a division by it a ZeroDivisionError in
     CPython (a traceback from the CLI) and NaN everywhere in the page."""
     with pytest.raises(SceneError, match=r'^dt: must be from 0\.000001 to 1 seconds'):
         run(json.dumps(dict(GOOD, dt=dt)), 3)

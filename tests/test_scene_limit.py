@@ -1,4 +1,4 @@
-"""Issue #22, items 1 and 2: one byte limit for every scene (cloth/scene.py MAX_SCENE_BYTES),
+"""Issue #22, items 1 and 2: one byte limit for every scene (cloth/keys.py MAX_SCENE_BYTES),
 here in the core and the CLI; tests/browser/test_scene_limit_page.py: links (decompression
 bombs), files, the Scene JSON box."""
 import json
@@ -9,11 +9,13 @@ import sys
 import pytest
 
 from cloth.api import load
-from cloth.scene import MAX_SCENE_BYTES, SceneError, too_large
+from cloth.keys import MAX_SCENE_BYTES, MODEL
+from cloth.scene import too_large
+from cloth.values import SceneError
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-SMALL = {'cols': 2, 'rows': 2, 'spacing': 0.1}
+SMALL = {'model': MODEL, 'cols': 2, 'rows': 2, 'spacing': 0.1}
 
 
 def padded(size):

@@ -1,17 +1,25 @@
-"""The scene's keys are declared once (cloth/scene.py KEYS, issue #23): the parser, its
+"""The scene's keys are declared once (cloth/keys.py KEYS, issue #23): the parser, its
 messages, `set`, compare panels and each solver's defaults all follow the declaration. The
 page's side (its fields, the compare editor, the recorder): tests/browser/test_schema_page.py.
+Scenes of model 1 (made before the membrane) and what became of their keys: at the end.
 """
 
 import json
 
 import pytest
 
-from cloth.api import load, run, set_settings
-from cloth.scene import KEYS, SCENE_KEYS, SETTABLE, COMPARE_KEYS, SOLVERS, SceneError, \
-    parse_scene, solver_defaults, spec
+from cloth.api import load, run, set_settings, notes
+from cloth.fabrics import fabric, DEFAULT_FABRIC
+from cloth.keys import KEYS, SCENE_KEYS, SETTABLE, COMPARE_KEYS, MODEL, LEGACY_KEYS, spec, \
+    solver_index
+from cloth.scene import parse_scene, legacy_note
+from cloth.solvers import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
+from cloth.values import SceneError
 
-BASE = {'cols': 4, 'rows': 3, 'spacing': 0.1, 'pins': [0, 3]}
+BASE = {'model': MODEL, 'cols': 4, 'rows': 3, 'spacing': 0.1, 'pins': [0, 3]}
+# What each solver's own budget holds, by key (cloth/solvers.py: [substeps, iterations,
+# corrections]).
+BUDGET_KEYS = ['substeps', 'iterations', 'corrections']
 NUMBERS = [k for k in KEYS if k.kind in ('int', 'number') and k.key not in ('cols', 'rows', 'spacing')]
 
 
@@ -26,11 +34,17 @@ def test_the_key_lists_are_the_declarations():
     assert len(set(SCENE_KEYS)) == len(SCENE_KEYS)
     assert SETTABLE == [k.key for k in KEYS if k.live]
     assert COMPARE_KEYS == [k.key for k in KEYS if k.panel]
-    # What makes the grid is never set live, nor held per panel.
-    for key in ('cols', 'rows', 'spacing', 'pins', 'shear'):
+    # What makes the grid is never set live, nor held per panel; nor is the model.
+    for key in ('cols', 'rows', 'spacing', 'pins', 'model'):
         assert key not in SETTABLE
-    for key in ('cols', 'rows', 'spacing', 'pins', 'gravity', 'actions', 'compare'):
+    for key in ('cols', 'rows', 'spacing', 'pins', 'gravity', 'actions', 'compare', 'model'):
         assert key not in COMPARE_KEYS
+    # The fabric is live and a panel's own: its shear a number like its stretch.
+    for key in ('stretch', 'shear', 'density'):
+        assert key in SETTABLE and key in COMPARE_KEYS and spec(key).kind == 'number'
+    # Model 1's keys that the membrane has no use for are no keys of the schema.
+    assert not set(LEGACY_KEYS) & set(SCENE_KEYS)
+    assert all(spec(key) is None for key in LEGACY_KEYS)
 
 
 @pytest.mark.parametrize('k', NUMBERS, ids=lambda k: k.key)
@@ -67,21 +81,38 @@ def test_a_page_field_never_offers_what_the_core_refuses():
 @pytest.mark.parametrize('solver', SOLVERS)
 def test_each_solvers_defaults_are_its_declared_ones(solver):
     s = parse_scene(scene_with('solver', solver))
-    d = solver_defaults(solver)
-    assert sorted(d) == sorted(k.key for k in KEYS if k.by_solver is not None)
-    for key, value in d.items():
-        assert getattr(s, key) == value, key
+    i = solver_index(solver)
+    assert sorted(k.key for k in KEYS if k.by_solver is not None) == sorted(BUDGET_KEYS)
+    for which, key in enumerate(BUDGET_KEYS):
+        assert getattr(s, key) == spec(key).by_solver[i] == SOLVER_BUDGETS[i][which], key
+    cloth = load(scene_with('solver', solver))
+    assert [cloth.substeps, cloth.iterations, cloth.corrections] == SOLVER_BUDGETS[i]
     # The keys that do not depend on the solver take their one default.
     assert [s.gravity_x, s.gravity_y] == spec('gravity').fallback
-    for key in ('dt', 'damping', 'max_speed', 'shear', 'compliance', 'tear', 'density', 'frames'):
+    assert [s.wind_x, s.wind_y] == spec('wind').fallback
+    assert [s.gust_amplitude, s.gust_period] == spec('gust').fallback
+    for key in ('dt', 'damping', 'stretch', 'shear', 'density', 'tear', 'drag', 'sleep', 'frames'):
         assert getattr(s, key) == spec(key).fallback, key
 
 
+def test_the_default_fabric_is_the_fabric_keys_defaults():
+    name, label, stretch, shear, density, what = fabric(DEFAULT_FABRIC)
+    assert [spec('stretch').fallback, spec('shear').fallback, spec('density').fallback] == \
+        [stretch, shear, density]
+    s = parse_scene(json.dumps(BASE))
+    assert (s.solver, s.model) == (DEFAULT_SOLVER, MODEL)
+
+
 def test_a_key_whose_zero_means_none_takes_null_for_none():
-    for key in ('tear', 'density'):
+    nones = [k.key for k in KEYS if k.kind == 'number' and k.lo_open and k.fallback == 0.0]
+    assert nones == ['tear']
+    for key in nones:
         assert run(scene_with(key, None), 30) == run(json.dumps(BASE), 30)
-    with pytest.raises(SceneError, match='^damping: must be a number'):
-        parse_scene(scene_with('damping', None))
+    # A density is no longer "0: 1 kg per vertex": it has a default of its own, and null is
+    # not a density.
+    for key in ('damping', 'density'):
+        with pytest.raises(SceneError, match='^' + key + ': must be a number'):
+            parse_scene(scene_with(key, None))
 
 
 def test_live_keys_are_the_ones_a_set_takes():
@@ -114,7 +145,7 @@ def test_a_panel_may_have_exactly_its_declared_keys():
 def test_the_scene_sections_fields_are_number_keys_with_fields():
     """The page's Scene section is made from SCENE_FIELDS: each a key with a field range, a
     number or an int (a point's field is its y), and the grid's keys are the ones not live."""
-    from cloth.scene import SCENE_FIELDS
+    from cloth.keys import SCENE_FIELDS
     k = {key.key: key for key in KEYS}
     assert len({f[0] for f in SCENE_FIELDS}) == len(SCENE_FIELDS)
     from cloth.scene import Scene
@@ -126,3 +157,96 @@ def test_the_scene_sections_fields_are_number_keys_with_fields():
         assert len(parts) in (0, 2) and (len(parts) == 2) == (k[key].kind in ('point', 'gust')), key
         assert [getattr(blank, a) for a in parts] == (k[key].fallback if parts else []), key
     assert [f[0] for f in SCENE_FIELDS if not k[f[0]].live] == ['cols', 'rows']
+
+
+# ---- the model: scenes made before the membrane ---------------------------------------------
+
+OLD = {'cols': 4, 'rows': 3, 'spacing': 0.1, 'pins': [0, 3]}      # no `model`: model 1
+
+
+def test_a_scene_without_a_model_is_of_model_1_and_one_with_it_of_its_own():
+    assert parse_scene(json.dumps(OLD)).model == 1 == spec('model').fallback
+    assert parse_scene(json.dumps(dict(OLD, model=1))).model == 1
+    assert parse_scene(json.dumps(BASE)).model == MODEL
+    assert legacy_note(parse_scene(json.dumps(BASE))) == ''
+
+
+@pytest.mark.parametrize('model', [0, MODEL + 1, -1, 1.5, '2', True, None, [2]])
+def test_a_model_out_of_range_is_an_error_naming_it(model):
+    with pytest.raises(SceneError, match='^model: must be '):
+        parse_scene(scene_with('model', model))
+
+
+def test_a_model_1_scene_with_legacy_keys_opens_and_the_note_says_what_became_of_them():
+    keys = dict(OLD, tethers=True, cells=True, lines=False, tolerance=1e-4, max_speed=50,
+                shear=True, compliance=0.01, solver='xpbd', iterations=1, substeps=8)
+    text = json.dumps(keys)
+    cloth = load(text)
+    s = cloth.scene
+    note = notes(cloth)[1]
+    assert note == legacy_note(s) and note.startswith('made before the membrane model (model 1)')
+    for key in ('tethers', 'cells', 'lines', 'tolerance', 'max_speed', 'shear', 'compliance'):
+        assert key + ' left out' in note or key + ' became' in note, key
+    # compliance (m/N) became the stretch stiffness 1 / compliance; the boolean shear left the
+    # default fabric's shear; the old default solver runs as the default with its own budget.
+    assert 'compliance became a stretch stiffness' in note
+    assert s.stretch == pytest.approx(100.0) and s.shear == spec('shear').fallback
+    assert 'solver xpbd runs as ' + DEFAULT_SOLVER in note
+    assert s.solver == DEFAULT_SOLVER
+    assert [s.substeps, s.iterations, s.corrections] == SOLVER_BUDGETS[solver_index(DEFAULT_SOLVER)]
+    assert 'substeps left out' in note and 'iterations left out' in note
+    # A model-1 scene had no density (each vertex weighed 1 kg): it takes the default fabric's.
+    assert 'density the default fabric' in note and s.density == spec('density').fallback
+    # It runs, as a membrane, the same as the scene that says so in model 2's keys.
+    now = dict(BASE, stretch=100.0)
+    assert run(text, 20) == run(json.dumps(now), 20)
+
+
+def test_a_model_1_scene_of_the_seeds_solver_keeps_its_steps():
+    s = parse_scene(json.dumps(dict(OLD, solver=SEED_SOLVER, iterations=7, substeps=2)))
+    assert (s.solver, s.iterations, s.substeps) == (SEED_SOLVER, 7, 2)
+    assert 'left out' not in legacy_note(s)
+
+
+def test_a_model_1_stretch_wins_over_its_compliance():
+    s = parse_scene(json.dumps(dict(OLD, compliance=0.01, stretch=800)))
+    assert s.stretch == 800
+    assert 'compliance left out' in legacy_note(s)
+
+
+@pytest.mark.parametrize('key', LEGACY_KEYS)
+def test_a_model_2_scene_with_a_legacy_key_is_an_unknown_key_error_naming_it(key):
+    value = {'tethers': True, 'cells': True, 'lines': True}.get(key, 0.001)
+    with pytest.raises(SceneError, match='^' + key + ': unknown key'):
+        parse_scene(scene_with(key, value))
+    parse_scene(json.dumps(dict(OLD, **{key: value})))          # model 1 has it
+    # nor may a set or a panel of a model-2 scene have it
+    cloth = load(json.dumps(BASE))
+    with pytest.raises(SceneError, match='^scene.' + key + ': cannot be set on a running cloth'):
+        set_settings(cloth, json.dumps({key: value}))
+    with pytest.raises(SceneError, match=r'^compare\[1\]\.' + key + ': not a key a panel can have'):
+        parse_scene(json.dumps(dict(BASE, compare=[{}, {key: value}])))
+
+
+def test_a_set_on_a_model_1_cloth_may_have_its_legacy_keys():
+    cloth = load(json.dumps(OLD))
+    set_settings(cloth, json.dumps({'tethers': False, 'tolerance': 0, 'damping': 2}))
+    assert cloth.scene.damping == 2 and cloth.scene.model == 1
+
+
+def test_shear_is_a_number_in_model_2():
+    s = parse_scene(scene_with('shear', 120))
+    assert s.shear == 120
+    cloth = load(scene_with('shear', 120))
+    assert all(cloth.stiff[e] == 120 for e in range(cloth.n_struct, cloth.n_edges))
+    assert cloth.n_edges > cloth.n_struct
+    for bad in (True, False, '50', [50]):
+        with pytest.raises(SceneError, match='^shear: must be a number'):
+            parse_scene(scene_with('shear', bad))
+    # and set live, it restiffens the diagonals
+    set_settings(cloth, json.dumps({'shear': 7.5}))
+    assert all(cloth.stiff[e] == 7.5 for e in range(cloth.n_struct, cloth.n_edges))
+    assert all(cloth.stiff[e] == spec('stretch').fallback for e in range(cloth.n_struct))
+    # In model 1 shear was a switch (whether cells had a diagonal): true or false, left out.
+    with pytest.raises(SceneError, match='^shear: must be true or false'):
+        parse_scene(json.dumps(dict(OLD, shear=50)))

@@ -8,11 +8,13 @@ import json
 import pytest
 
 from cloth.api import run
-from cloth.scene import MAX_ACTIONS, SceneError
+from cloth.keys import MAX_ACTIONS, MODEL
+from cloth.solvers import DEFAULT_SOLVER, SEED_SOLVER
+from cloth.values import SceneError
 from cloth import session as ses
 
-SCENE = {'cols': 8, 'rows': 6, 'spacing': 0.1, 'pins': [0, 7], 'damping': 1}
-PAIR = [{'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}, {'solver': 'xpbd'}]
+SCENE = {'model': MODEL, 'cols': 8, 'rows': 6, 'spacing': 0.1, 'pins': [0, 7], 'damping': 1}
+PAIR = [{'solver': SEED_SOLVER, 'substeps': 1, 'iterations': 20}, {'solver': DEFAULT_SOLVER}]
 
 
 def positions(cloth):
@@ -49,6 +51,23 @@ def test_a_recording_replays_to_where_the_cloth_is():
     rec = json.loads(text)
     assert rec['frames'] == s.frame == 50
     assert [a['op'] for a in rec['actions']].count('move') == 12     # coalesced: one a frame
+    assert replayed(text) == positions(s.panels[0])
+
+
+def test_a_recording_carries_the_model_it_was_made_under():
+    """A recording of a current scene says model 2; one of a scene made before the membrane
+    (no `model`, model 1's keys) stays model 1 with its keys, and replays bit for bit all the
+    same."""
+    s = ses.open_session(json.dumps(SCENE))
+    ses.advance(s, 2)
+    assert json.loads(ses.recording_text(s))['model'] == MODEL
+    old = {k: v for k, v in SCENE.items() if k != 'model'}
+    old.update(tethers=True, tolerance=1e-4, compliance=0.002, solver='xpbd')
+    s = ses.open_session(json.dumps(old))
+    play(s)
+    text = ses.recording_text(s)
+    rec = json.loads(text)
+    assert 'model' not in rec and rec['tethers'] is True and rec['compliance'] == 0.002
     assert replayed(text) == positions(s.panels[0])
 
 
@@ -140,7 +159,7 @@ def test_the_recording_stops_where_it_is_complete_at_the_scene_formats_limit():
 
 
 def test_the_recordings_codes_are_the_scene_formats_ops():
-    from cloth.scene import OPS
+    from cloth.keys import OPS
     for name in OPS:
         assert OPS[getattr(ses, name.upper())] == name
     assert min(ses.GRAB_HERE, ses.MOVE_BY) >= len(OPS)

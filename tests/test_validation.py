@@ -8,14 +8,24 @@ from pathlib import Path
 import pytest
 
 from cloth.api import run
-from cloth.scene import SceneError
+from cloth.hands import grab, move, pin
+from cloth.keys import MODEL, LEGACY_KEYS
+from cloth.values import SceneError
 
 ROOT = Path(__file__).resolve().parent.parent
-GOOD = {'cols': 3, 'rows': 2, 'spacing': 0.1}
+GOOD = {'model': MODEL, 'cols': 3, 'rows': 2, 'spacing': 0.1}
 
 
 def with_keys(**keys):
     s = dict(GOOD)
+    s.update(keys)
+    return json.dumps(s)
+
+
+def old_with_keys(**keys):
+    """A scene made before the membrane (model 1: no `model` key)."""
+    s = dict(GOOD)
+    del s['model']
     s.update(keys)
     return json.dumps(s)
 
@@ -70,15 +80,45 @@ BAD = [
     (with_keys(damping=-1), 'damping:'),
     (with_keys(solver='verlet'), 'solver:'),
     (with_keys(solver=3), 'solver:'),
-    (with_keys(tethers='yes'), 'tethers:'),
     (with_keys(sleep=1), 'sleep:'),
-    (with_keys(shear=1), 'shear:'),
-    (with_keys(compliance=-1e-6), 'compliance:'),
-    (with_keys(tolerance=2), 'tolerance:'),
+    (with_keys(shear=True), 'shear:'),
+    (with_keys(shear=-1), 'shear:'),
+    (with_keys(stretch=0.5), 'stretch:'),
+    (with_keys(density=0), 'density:'),
+    (with_keys(density=None), 'density:'),
+    (with_keys(corrections=-1), 'corrections:'),
+    (with_keys(tear=0), 'tear:'),
+    (with_keys(drag=-1), 'drag:'),
+    (with_keys(wind=[0]), 'wind:'),
+    (with_keys(gust=[1, 0]), 'gust:'),
     (with_keys(name=5), 'name:'),
-    (with_keys(max_speed=0), 'max_speed:'),
-    (with_keys(max_speed=1e7), 'max_speed:'),
+    (with_keys(model=0), 'model:'),
+    (with_keys(model=MODEL + 1), 'model:'),
+    (with_keys(model=1.5), 'model:'),
+    (with_keys(model='2'), 'model:'),
     (with_keys(colour='red'), 'colour:'),
+    # Model 1's keys are no keys of model 2's.
+    (with_keys(tethers=True), 'tethers: unknown key'),
+    (with_keys(cells=False), 'cells: unknown key'),
+    (with_keys(lines=False), 'lines: unknown key'),
+    (with_keys(tolerance=0), 'tolerance: unknown key'),
+    (with_keys(max_speed=50), 'max_speed: unknown key'),
+    (with_keys(compliance=1e-3), 'compliance: unknown key'),
+    # A scene of model 1 still has them checked as they were.
+    (old_with_keys(tethers='yes'), 'tethers:'),
+    (old_with_keys(cells=1), 'cells:'),
+    (old_with_keys(lines=None), 'lines:'),
+    (old_with_keys(shear=1), 'shear:'),
+    (old_with_keys(compliance=-1e-6), 'compliance:'),
+    (old_with_keys(compliance=2e3), 'compliance:'),
+    (old_with_keys(tolerance=-1), 'tolerance:'),
+    (old_with_keys(max_speed=-1), 'max_speed:'),
+    (old_with_keys(max_speed=1e7), 'max_speed:'),
+    (old_with_keys(colour='red'), 'colour:'),
+    (old_with_keys(solver='verlet'), 'solver:'),
+    # As they were in model 1: 0 <= tolerance <= 1, max_speed > 0.
+    (old_with_keys(tolerance=2), 'tolerance:'),
+    (old_with_keys(max_speed=0), 'max_speed:'),
     (with_keys(actions={}), 'actions:'),
     (with_keys(actions=[3]), 'actions[0]:'),
     (action(frame=-1), 'actions[0].frame:'),
@@ -111,17 +151,30 @@ def test_bad_frame_count(frames):
         run(json.dumps(GOOD), frames)
 
 
+@pytest.mark.parametrize('key', LEGACY_KEYS)
+def test_a_legacy_key_in_a_current_scene_is_an_unknown_key_naming_it(key):
+    value = {'tethers': True, 'cells': True, 'lines': True}.get(key, 0.001)
+    with pytest.raises(SceneError) as err:
+        run(with_keys(**{key: value}), 1)
+    message = str(err.value)
+    assert message.startswith(key + ': unknown key (known: ') and '\n' not in message
+    # the keys it lists are the current ones, and none of model 1's
+    known = message[len(key + ': unknown key (known: '):-1].split(', ')
+    assert 'model' in known and 'stretch' in known and not set(LEGACY_KEYS) & set(known)
+    run(old_with_keys(**{key: value}), 1)       # a scene of model 1 has it
+
+
 def test_bad_vertex_in_a_direct_call():
     from cloth.api import load
     cloth = load(json.dumps(GOOD))
     for k in [-1, 6, 2.5]:
         with pytest.raises(SceneError, match='^vertex:'):
-            cloth.pin(k)
-    cloth.grab(0, 0, 0)
+            pin(cloth, k)
+    grab(cloth, 0, 0, 0)
     with pytest.raises(SceneError, match='^to:'):
-        cloth.move(0, float('nan'), 0)
+        move(cloth, 0, float('nan'), 0)
     with pytest.raises(SceneError, match='^vertex:'):
-        cloth.move(1, 0, 0)
+        move(cloth, 1, 0, 0)
 
 
 def cli(*args, stdin=None):
