@@ -166,8 +166,8 @@ def regrip(cloth):
 def refix(cloth):
     """fixed = pinned and in no hand; inv_mass; which vertices fall freely (their piece has no
     fixed vertex and no hand: integrate.predict's guess); the weight the imbalance is measured
-    against; and whether the coarse operators are stale (the fixed vertices or the grips are
-    not those they were made for: a hand that takes hold and lets go between two frames leaves
+    against; whether the coarse operators are stale (the fixed vertices or the grips are not
+    those they were made for: a hand that takes hold and lets go between two frames leaves
     them as they were, and changes nothing at all)."""
     g2 = cloth.gravity_x * cloth.gravity_x + cloth.gravity_y * cloth.gravity_y
     if g2 < 9.81 * 9.81:
@@ -182,7 +182,8 @@ def refix(cloth):
             cloth.inv_mass[k] = 0.0
         else:
             cloth.inv_mass[k] = 1.0 / cloth.mass[k]
-            load2 += cloth.mass[k] * cloth.mass[k] * g2
+            if cloth.grip[k] < 0:
+                load2 += cloth.mass[k] * cloth.mass[k] * g2
     cloth.load2 = load2
     count = label_pieces(cloth)
     held = cloth.piece_held

@@ -30,7 +30,7 @@ when its history is; `rest_at` writes a vertex's history as that of a fall from 
 # the solver's budget (denim 20x20, polyester 30x30: 2-10 m/s after 10 s), and came to rest
 # under backward Euler or under this choice, at the same cost; a pendulum, solved exactly,
 # keeps BDF2's period and energy.
-UNBALANCED = 1.0
+UNBALANCED = 0.1
 
 
 def configure(cloth, scene):

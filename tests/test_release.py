@@ -1,233 +1,232 @@
-"""Pulling and letting go (issue #21): a hand of finite strength stops where an inextensible
-cloth can reach instead of stretching it, pulls a compliant one only as hard as it can, and
-whatever stretch a hand leaves returns without a fling, while a throw still throws
-(cloth/sim.py HAND_FORCE and LET_GO_SLACK)."""
+"""Letting go, tapping, pinning and cutting add no energy (issue #40): a hand is a force-capped
+spring of the step's energy (cloth/hands.py), and removing it removes nothing else.
+
+After the act, the cloth's kinetic energy never exceeds what it could come from: the kinetic
+and elastic energy it held just before, and what gravity has done since (the fall of its
+centre of mass, measure.energies' gravitational term): KE(t) <= KE(0) + EL(0) + Ug(0) - Ug(t).
+Once nothing drives the cloth (no hand, no wind, obstacles still) backward-Euler and BDF2
+steps only take energy away; an unfinished solve may leave a little, bounded by GAIN of the
+energy moving about (kinetic + elastic) just before.
+"""
+
+import json
 import math
 
-from hypothesis import given, settings, strategies as st, HealthCheck, example
 import pytest
+from hypothesis import given, settings, strategies as st
 
-import cloth.sim as sim
-from cloth.sim import frame, grab, move, release, pin
-from helpers import load, scene
+from cloth.presets import PRESETS, preset_scene
+from cloth.hands import HAND_FORCE
+from cloth.step import cut
+from helpers import load, step, frame, grab, move, release, pin, unpin, energies, fastest, xy, scene
 
-N = 12
-H = 1.0 / (N - 1)
-PINS = list(range(0, N, 3)) + [N - 1]
-# The presets' material (webgl's Jersey): 0.2 kg/m^2, 500 N/m.
-JERSEY = dict(density=0.2, compliance=1.0 / 500)
+GAIN = 1e-3
 
 
-def hanging(**extra):
-    keys = dict(cols=N, rows=N, spacing=H, pins=PINS, damping=1.0)
-    keys.update(extra)
-    cloth = load(scene(**keys))
-    for _ in range(120):
+def total(cloth):
+    e = energies(cloth)
+    return e[0] + e[1] + e[2], e[0] + e[1]
+
+
+def still(name, n):
+    """Preset `name` on an n x n grid (a chain: n x 1) without wind, as JSON text."""
+    p = next(p for p in PRESETS if p[0] == name)
+    obj = preset_scene(name, n, 1 if p[3] == 1 else n)
+    obj.pop('wind', None)
+    obj.pop('gust', None)
+    return json.dumps(obj)
+
+
+def bottom_middle(cloth):
+    return (cloth.rows - 1) * cloth.cols + cloth.cols // 2 if cloth.rows > 1 else cloth.cols - 1
+
+
+def watch(cloth, frames):
+    """Over the next `frames` frames, the most the kinetic energy rises above what it could come
+    from (the module's comment), and the energy moving about now."""
+    k0, el0, g0 = energies(cloth)
+    most = -math.inf
+    for _ in range(frames):
         frame(cloth)
-    return cloth
+        k, el, g = energies(cloth)
+        most = max(most, k - (k0 + el0 + g0 - g))
+    return most, k0 + el0
 
 
-def pull(cloth, k, dx, dy, frames=40, hold=0, kinematic=False):
-    """Grab vertex k where it is, carry the hand (dx, dy) over `frames` frames, hold it still
-    for `hold` frames; returns the largest strain while held. With `kinematic` the vertex is
-    pinned first, so the hand puts it where it is (a dragged pin)."""
-    if kinematic:
-        pin(cloth, k)
-    x0, y0 = cloth.pos[2 * k], cloth.pos[2 * k + 1]
+@pytest.mark.parametrize('name', [p[0] for p in PRESETS])
+@pytest.mark.parametrize('pull', [(0.0, -0.3), (0.4, 0.0), (0.0, 0.3)])
+def test_letting_go_after_a_pull_adds_no_energy(name, pull):
+    cloth = load(still(name, 10))
+    step(cloth, 60)
+    k = bottom_middle(cloth)
+    x0, y0 = xy(cloth, k)
     grab(cloth, k, x0, y0)
-    worst = 0.0
-    for f in range(1, frames + hold + 1):
-        t = min(1.0, f / frames)
-        move(cloth, k, x0 + dx * t, y0 + dy * t)
+    for f in range(1, 31):
+        move(cloth, k, x0 + pull[0] * f / 30, y0 + pull[1] * f / 30)
         frame(cloth)
-        cloth.measure()
-        worst = max(worst, cloth.max_strain)
-    return worst
-
-
-def let_go(cloth, k):
-    """Release k; return (the fastest any vertex moved in a frame over the next 3 frames, m/s;
-    how far the cloth rose, within a second, above both its highest pin and its highest point
-    at the release, beyond where the speed it had then carries it: v^2 / 2g for the fastest
-    upward speed of the last step)."""
-    top = max(cloth.pos[2 * j + 1] for j in range(cloth.n_verts))
-    pins = [cloth.pos[2 * j + 1] for j in range(cloth.n_verts) if cloth.pinned[j] == 1]
-    up = max(0.0, max(cloth.pos[2 * j + 1] - cloth.prev[2 * j + 1] for j in range(cloth.n_verts)) / cloth.h)
-    ceiling = max([top] + pins) + up * up / (2 * 9.81)
+    step(cloth, 15)
     release(cloth, k)
-    fastest = 0.0
-    rise = -1e9
-    for f in range(60):
-        before = list(cloth.pos)
-        frame(cloth)
-        if f < 3:
-            fastest = max(fastest, max(math.hypot(cloth.pos[2 * j] - before[2 * j],
-                                                  cloth.pos[2 * j + 1] - before[2 * j + 1])
-                                       for j in range(cloth.n_verts)) / cloth.dt)
-        rise = max(rise, max(cloth.pos[2 * j + 1] for j in range(cloth.n_verts)) - ceiling)
-    return fastest, rise
+    rise, moving = watch(cloth, 90)
+    assert rise <= GAIN * max(moving, 1e-9)
 
 
-BOTTOM = (N - 1) * N + N // 2
-# Nothing rises, after a release, more than this above the highest pin and the highest point at
-# the release. Not zero: a compliant top edge between two pins is pushed up by the cloth swinging
-# back under it (a sheet in its plane cannot buckle out of it; measured up to 4.0 cm on this
-# 12x12 jersey, 1 mm inextensible; README, known limits), and a cloth pushed up unfolds a
-# little upward as it drops. A fling threw the cloth 0.6-2 m up.
-RISE = 0.05
+@pytest.mark.parametrize('name', ['corners', 'curtain', 'towel', 'chain'])
+def test_pinning_unpinning_and_cutting_add_no_energy(name):
+    cloth = load(still(name, 10))
+    step(cloth, 20)                          # still moving
+    k = bottom_middle(cloth)
+    pin(cloth, k)
+    rise, moving = watch(cloth, 30)
+    assert rise <= GAIN * max(moving, 1e-9)
+    unpin(cloth, k)
+    rise, moving = watch(cloth, 30)
+    assert rise <= GAIN * max(moving, 1e-9)
+    w = (cloth.cols - 1) * cloth.spacing
+    y = xy(cloth, cloth.n_verts // 2)[1]
+    cut(cloth, -0.1 * w, y, 0.6 * w, y)
+    rise, moving = watch(cloth, 60)
+    assert rise <= GAIN * max(moving, 1e-9)
 
 
-def reach(cloth, k):
-    """How far vertex k is from each pin, as a share of the length of the grid path to it: at
-    most 1 wherever an inextensible cloth can take it."""
-    r, c = divmod(k, N)
-    return max(math.hypot(cloth.pos[2 * k] - cloth.pos[2 * p], cloth.pos[2 * k + 1] - cloth.pos[2 * p + 1])
-               / ((r + abs(c - p)) * H) for p in PINS)
+@pytest.mark.parametrize('name', [p[0] for p in PRESETS])
+def test_a_tap_changes_nothing(name):
+    # A hand taking hold and letting go with no frame between leaves the cloth exactly as an
+    # untouched one, bit for bit, whether at rest or moving.
+    a = load(still(name, 8))
+    b = load(still(name, 8))
+    step(a, 25)
+    step(b, 25)
+    k = bottom_middle(b)
+    grab(b, k, b.pos[2 * k], b.pos[2 * k + 1])
+    release(b, k)
+    step(a, 40)
+    step(b, 40)
+    assert list(a.pos) == list(b.pos)
+    assert list(a.vel) == list(b.vel)
 
 
-def test_a_hand_stops_where_an_inextensible_cloth_can_reach():
-    cloth = hanging()
-    held = pull(cloth, BOTTOM, 0.0, -0.3, hold=60)
-    # The bottom of a hanging column is as far from its pins as it can be: pulled 0.3 m down,
-    # the vertex stays, and the cloth is not stretched.
-    assert reach(cloth, BOTTOM) < 1.0 + 1e-3
-    assert held < 0.05, held
-    # The control: a hand that puts the vertex where it is (a dragged pin) stretches it.
-    kinematic = hanging()
-    assert pull(kinematic, BOTTOM, 0.0, -0.3, hold=60, kinematic=True) > 0.2
+@pytest.mark.parametrize('stretch, density', [(500.0, 0.2), (5000.0, 0.15)])
+def test_a_hand_moving_with_the_cloth_leaves_its_motion_as_it_was(stretch, density):
+    # A chain swinging; a hand takes its end where it is and moves along the end's own path (as
+    # an untouched chain has it) for five frames, then lets go. The end stays on its path while
+    # held (the hand's spring barely pulls: the end is where the hand holds it), and the chain
+    # is let go near where the untouched one is: what differs is the unfinished solves' own
+    # noise (the step is balanced only to a share of the weight while the chain swings), not a
+    # throw. (The let-go window this replaced left the end 0.17 m off its path at once.)
+    text = scene(cols=12, rows=1, spacing=0.1, pins=[0], stretch=stretch, density=density)
+    a = load(text)
+    step(a, 30)
+    path, untouched = [], []
+    for _ in range(15):
+        frame(a)
+        path.append(xy(a, 11))
+        untouched.append([xy(a, k) for k in range(12)])
+    b = load(text)
+    step(b, 30)
+    grab(b, 11, b.pos[22], b.pos[23])
+    for p in path[:5]:
+        move(b, 11, p[0], p[1])
+        frame(b)
+        assert math.dist(xy(b, 11), p) < 1e-3
+    release(b, 11)
+    assert max(math.dist(xy(b, k), untouched[4][k]) for k in range(12)) < 0.04
+    for f in range(5, 15):
+        frame(b)
+    assert max(math.dist(xy(b, k), untouched[14][k]) for k in range(12)) < 0.1
 
 
-@pytest.mark.parametrize('material', [{}, JERSEY], ids=['inextensible', 'jersey'])
-def test_a_hand_holds_its_vertex_where_it_is_within_reach(material):
-    cloth = hanging(**material)
-    x0, y0 = cloth.pos[2 * BOTTOM], cloth.pos[2 * BOTTOM + 1]
-    pull(cloth, BOTTOM, 0.1, 0.05, hold=30)
-    # Swung aside and up, within reach: a load the hand can hold, and the vertex rests where the
-    # hand is (each step's push makes up for what the cloth took back in the last).
-    assert math.hypot(cloth.pos[2 * BOTTOM] - x0 - 0.1, cloth.pos[2 * BOTTOM + 1] - y0 - 0.05) < 1e-3
-
-
-def test_a_compliant_cloth_is_pulled_only_as_hard_as_the_hand_can():
-    cloth = hanging(**JERSEY)
-    pull(cloth, BOTTOM, 0.0, -0.5, hold=60)
-    # Jersey stretches, but a hand of HAND_FORCE times the cloth's weight takes the vertex only
-    # part of the way: the column above it carries that force, each link stretched
-    # F compliance / spacing plus the weight below it.
-    weight = N * N * 0.2 * H * H * 9.81
-    most = sim.HAND_FORCE * weight / 500 / H + 0.2 * 9.81 * 1.0 / 500
-    r = N - 2
-    a, b = r * N + N // 2, (r + 1) * N + N // 2
-    link = math.hypot(cloth.pos[2 * b] - cloth.pos[2 * a], cloth.pos[2 * b + 1] - cloth.pos[2 * a + 1])
-    assert link / H - 1 < 1.2 * most, (link / H - 1, most)
-    y0 = -(N - 1) * H
-    assert -0.5 < cloth.pos[2 * BOTTOM + 1] - y0 < -0.05
-
-
-@pytest.mark.parametrize('material', [{}, JERSEY], ids=['inextensible', 'jersey'])
-@pytest.mark.parametrize('dx, dy', [(0.0, -1.0), (0.0, 1.0), (1.0, 0.0), (-0.7, -0.7)])
-@pytest.mark.parametrize('distance, limit', [(0.2, 3.0), (0.5, 5.0)])
-def test_letting_go_after_a_pull_flings_nothing(material, dx, dy, distance, limit):
-    cloth = hanging(**material)
-    pull(cloth, BOTTOM, dx * distance, dy * distance, hold=30)
-    fastest, rise = let_go(cloth, BOTTOM)
-    assert fastest < limit, fastest
-    assert rise < RISE, rise
-
-
-def test_without_the_let_go_window_a_stretched_cloth_snaps_back(monkeypatch):
-    # The tests above can fail: a compliant cloth pulled down and let go snaps back when nothing
-    # returns its stretch slowly.
-    def fastest():
-        cloth = hanging(**JERSEY)
-        pull(cloth, BOTTOM, 0.0, -0.5, hold=30)
-        return let_go(cloth, BOTTOM)[0]
-    calm = fastest()
-    monkeypatch.setattr(sim, 'LET_GO_SLACK', 1e9)
-    snap = fastest()
-    assert snap > 2 * calm, (snap, calm)
-
-
-@given(k=st.integers(0, N * N - 1), angle=st.floats(0, 2 * math.pi), distance=st.sampled_from([0.2, 0.5]),
-       hold=st.sampled_from([0, 30]), compliant=st.booleans())
-@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@example(k=124, angle=2.1790795194679657, distance=0.2, hold=30, compliant=True)   # 4.0 cm
-@example(k=137, angle=5.808558131494886, distance=0.2, hold=30, compliant=True)    # 2.6 cm
-def test_random_pulls_fling_nothing(k, angle, distance, hold, compliant):
-    cloth = hanging(**(JERSEY if compliant else {}))
-    if cloth.pinned[k] == 1:
-        return
-    pull(cloth, k, distance * math.cos(angle), distance * math.sin(angle), hold=hold)
-    fastest, rise = let_go(cloth, k)
-    assert fastest < (3.0 if distance == 0.2 else 5.0), fastest
-    assert rise < RISE, rise
-
-
-def test_a_tap_moves_nothing():
-    touched, untouched = hanging(**JERSEY), hanging(**JERSEY)
-    k = (N // 2) * N + N // 2
-    grab(touched, k, touched.pos[2 * k], touched.pos[2 * k + 1])
-    release(touched, k)
-    for _ in range(60):
-        frame(touched)
-        frame(untouched)
-    # (The settled cloth still creeps by micrometres.)
-    assert max(abs(a - b) for a, b in zip(touched.pos, untouched.pos)) < 1e-5
-
-
-@pytest.mark.parametrize('material', [{}, JERSEY], ids=['inextensible', 'jersey'])
-def test_a_tap_on_a_moving_cloth_moves_nothing(material):
-    # A chain swinging down from the horizontal, tapped at its middle as it passes: a hand that
-    # takes and lets go in the same instant neither stops nor pushes what it touched.
-    def swinging():
-        cloth = load(scene(cols=12, rows=1, spacing=0.1, pins=[0], **material))
-        for _ in range(20):
-            frame(cloth)
-        return cloth
-    touched, untouched = swinging(), swinging()
-    assert math.hypot(touched.pos[12] - touched.prev[12], touched.pos[13] - touched.prev[13]) / touched.h > 1.0
-    grab(touched, 6, touched.pos[12], touched.pos[13])
-    release(touched, 6)
-    for _ in range(60):
-        frame(touched)
-        frame(untouched)
-    assert max(abs(a - b) for a, b in zip(touched.pos, untouched.pos)) < 1e-9
-
-
-def test_the_let_go_window_closes():
-    cloth = hanging(**JERSEY)
-    pull(cloth, BOTTOM, 0.0, -0.3)
-    release(cloth, BOTTOM)
-    frame(cloth)
-    assert cloth.let_go
-    for _ in range(120):
-        frame(cloth)
-    assert not cloth.let_go
-
-
-def flick(speed, **extra):
-    """A free cloth in zero gravity, its middle vertex dragged sideways at `speed` m/s for a
-    third of a second and let go; returns the centre of mass's speed over the next 0.5 s."""
-    cloth = load(scene(cols=N, rows=N, spacing=H, gravity=[0.0, 0.0], **extra))
-    k = (N // 2) * N + N // 2
-    x0, y0 = cloth.pos[2 * k], cloth.pos[2 * k + 1]
-    grab(cloth, k, x0, y0)
+def test_a_release_keeps_the_cloths_motion_and_adds_none():
+    # A whole free cloth carried by a hand and let go keeps flying with the motion it had (no
+    # velocity is written at a release), and its energy does not rise.
+    cloth = load(scene(cols=5, rows=5, spacing=0.05, gravity=[0.0, 0.0]))
+    grab(cloth, 12, cloth.pos[24], cloth.pos[25])
     for f in range(1, 21):
-        move(cloth, k, x0 + speed * f / 60.0, y0)
+        move(cloth, 12, 0.1 + 0.02 * f, -0.1)
+        frame(cloth)
+    before = [cloth.vel[24], cloth.vel[25]]
+    release(cloth, 12)
+    assert [cloth.vel[24], cloth.vel[25]] == before
+    rise, moving = watch(cloth, 60)
+    assert rise <= GAIN * moving
+
+
+@settings(max_examples=25, deadline=None)
+@given(name=st.sampled_from(['corners', 'curtain', 'towel', 'chain', 'tearable']),
+       n=st.integers(min_value=4, max_value=9),
+       gestures=st.lists(st.tuples(st.floats(-0.5, 0.5), st.floats(-0.5, 0.0), st.integers(1, 20)),
+                         min_size=1, max_size=4))
+def test_random_gestures_add_no_energy_once_let_go(name, n, gestures):
+    # Pulls down and aside (an upward lift: the next test).
+    cloth = load(still(name, n))
+    step(cloth, 10)
+    k = bottom_middle(cloth)
+    for dx, dy, frames in gestures:
+        x0, y0 = xy(cloth, k)
+        grab(cloth, k, x0, y0)
+        for f in range(1, frames + 1):
+            move(cloth, k, x0 + dx * f / frames, y0 + dy * f / frames)
+            frame(cloth)
+        release(cloth, k)
+        rise, moving = watch(cloth, 20)
+        assert rise <= GAIN * max(moving, 1e-9)
+        assert all(math.isfinite(v) for v in cloth.pos)
+
+
+@pytest.mark.xfail(strict=True, reason='known limit (README): the part of a held cloth that a lift '
+                   'leaves slack lags gravity (the sweeps hold a vertex near a slack spring still), '
+                   'so let go on its way up it rises higher than its energy allows')
+@pytest.mark.parametrize('name, n', [('curtain', 9), ('towel', 5)])
+def test_a_lift_let_go_on_its_way_up_adds_no_energy(name, n):
+    cloth = load(still(name, n))
+    step(cloth, 10)
+    k = bottom_middle(cloth)
+    x0, y0 = xy(cloth, k)
+    grab(cloth, k, x0, y0)
+    for f in range(1, 11):
+        move(cloth, k, x0, y0 + 0.05 * f)
         frame(cloth)
     release(cloth, k)
-    cx0 = sum(cloth.pos[0::2]) / cloth.n_verts
-    for _ in range(30):
+    rise, moving = watch(cloth, 30)
+    assert rise <= GAIN * moving
+
+
+@pytest.mark.parametrize('n', [10, 16])
+def test_a_full_pull_beyond_reach_tears_the_tearable_cloth(n):
+    # Tearable hangs from a rod; a hand pulls its bottom middle down 1 m, far beyond reach: at
+    # full force it tears it at any grid size (its edges break past a strain its fabric reaches
+    # under HAND_FORCE spread over the grip).
+    cloth = load(json.dumps(preset_scene('tearable', n, n)))
+    step(cloth, 30)
+    k = bottom_middle(cloth)
+    x0, y0 = xy(cloth, k)
+    grab(cloth, k, x0, y0)
+    for f in range(1, 61):
+        move(cloth, k, x0, y0 - f / 60.0)
         frame(cloth)
-    cx1 = sum(cloth.pos[0::2]) / cloth.n_verts
-    return (cx1 - cx0) / 0.5
+    assert cloth.broken > 0
 
 
-@pytest.mark.parametrize('speed', [1.0, 3.0, 10.0])
-def test_a_flick_still_throws_the_cloth(speed, monkeypatch):
-    # A free grid of structural edges is a mechanism: it follows a hand partly by shearing, so
-    # it may fly slower than the hand or, whipped, faster. What letting go must not do is take
-    # momentum out of the throw: the let-go window slows the cloth's motion relative to its mean.
-    thrown = flick(speed)
-    assert 0.3 * speed < thrown < 2.0 * speed, (speed, thrown)
-    monkeypatch.setattr(sim, 'LET_GO_SLACK', 1e9)
-    assert flick(speed) == pytest.approx(thrown, rel=1e-6)
+def test_without_tearing_a_pull_is_held_to_the_hands_force():
+    # Beyond reach the hand pulls with at most HAND_FORCE: the curtain's rod carries the pull,
+    # so its pins' springs carry at most the cloth's weight and the hand's force.
+    cloth = load(json.dumps(preset_scene('curtain', 8, 8)))
+    step(cloth, 30)
+    k = bottom_middle(cloth)
+    x0, y0 = xy(cloth, k)
+    grab(cloth, k, x0, y0)
+    for f in range(1, 31):
+        move(cloth, k, x0, y0 - f / 30.0)
+        frame(cloth)
+    step(cloth, 60)
+    pull = 0.0
+    for e in range(cloth.n_edges):
+        a, b = cloth.edge_a[e], cloth.edge_b[e]
+        if cloth.fixed[a] == cloth.fixed[b]:
+            continue
+        L = math.dist(xy(cloth, a), xy(cloth, b))
+        if L > cloth.rest[e]:
+            dy = (cloth.pos[2 * b + 1] - cloth.pos[2 * a + 1]) / L
+            pull += cloth.stiff[e] * (L - cloth.rest[e]) * abs(dy)
+    weight = sum(cloth.mass) * 9.81
+    assert pull < HAND_FORCE + weight * 1.01
+    assert fastest(cloth) < 5.0

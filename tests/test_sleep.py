@@ -1,12 +1,14 @@
-"""Sleep: a cloth at rest stops being stepped until an operation changes it, and nothing
-that still moves visibly is put to sleep."""
+"""Sleep (cloth/sleep.py): a cloth at rest stops being stepped until an operation changes it, a
+sleeping cloth costs nothing (cloth.steps and cloth.sweeps stop growing), and nothing that still
+moves visibly is put to sleep."""
 import math
 
 import pytest
 
-from cloth.sim import frame, grab, move, release, pin, unpin
-from cloth.reference import rest_grid
-from helpers import curtain, load, scene, step
+from cloth.sleep import SLEEP_MOTION, SLEEP_DRIFT, SLEEP_TIME, SLEEP_IMBALANCE
+from cloth.reference import statics
+from cloth.script import apply_due
+from helpers import curtain, preset, load, scene, step, frame, grab, move, release, pin, unpin
 
 
 def frames_until_asleep(cloth, limit):
@@ -17,57 +19,90 @@ def frames_until_asleep(cloth, limit):
     return None
 
 
-def test_a_curtain_at_rest_sleeps_after_a_second_and_then_costs_nothing():
-    cloth = load(curtain(10, damping=1.0))
-    slept = frames_until_asleep(cloth, 200)
-    assert slept is not None and 60 <= slept <= 70, slept
-    work = cloth.projections
+def extent(cloth):
+    return max(max(cloth.cols, cloth.rows) - 1, 1) * cloth.spacing
+
+
+@pytest.mark.parametrize('solver', ['vbd', 'xpbd', 'jakobsen'])
+def test_a_cloth_in_balance_sleeps_after_exactly_its_window(solver):
+    """A curtain without gravity is in balance on its rest grid from the start: nothing moves,
+    so it sleeps once SLEEP_TIME of still frames have passed (the frame after the window)."""
+    cloth = load(curtain(6, solver=solver, gravity=[0.0, 0.0]))
+    window = math.ceil(SLEEP_TIME / cloth.dt)
+    assert frames_until_asleep(cloth, 200) == window + 1
+
+
+@pytest.mark.parametrize('solver', ['vbd', 'xpbd', 'jakobsen'])
+def test_a_curtain_at_rest_sleeps_and_then_costs_nothing(solver):
+    """A hanging curtain settles (its fabric stretches under its weight and sways, damped), and
+    sleeps only after a window in which no vertex moved more than SLEEP_MOTION of the cloth's
+    extent a frame; asleep, it is not stepped: no step, no sweep, not a bit of it moves."""
+    cloth = load(curtain(10, solver=solver, damping=1.0))
+    bound = SLEEP_MOTION * extent(cloth)
+    window = math.ceil(SLEEP_TIME / cloth.dt)
+    moved = []
+    for f in range(600):
+        before = list(cloth.pos)
+        frame(cloth)
+        moved.append(max(math.hypot(cloth.pos[2 * k] - before[2 * k], cloth.pos[2 * k + 1] - before[2 * k + 1])
+                         for k in range(cloth.n_verts)))
+        if cloth.asleep:
+            break
+    assert cloth.asleep
+    assert len(moved) > window and max(moved[-window:]) <= bound
+    assert cloth.imbalance <= SLEEP_IMBALANCE
+    steps, sweeps = cloth.steps, cloth.sweeps
     pos = list(cloth.pos)
     step(cloth, 500)
     assert cloth.asleep
-    assert cloth.projections == work
+    assert (cloth.steps, cloth.sweeps) == (steps, sweeps)
     assert list(cloth.pos) == pos
 
 
 @pytest.mark.parametrize('op', ['grab', 'release', 'pin', 'unpin'])
 def test_every_operation_wakes_it(op):
     cloth = load(curtain(6, damping=1.0))
-    assert frames_until_asleep(cloth, 200)
+    assert frames_until_asleep(cloth, 400)
     k = 33                                  # bottom row, not pinned
     if op == 'grab':
         grab(cloth, k, 0.3, -1.5)
     elif op == 'release':
         grab(cloth, k, cloth.pos[2 * k], cloth.pos[2 * k + 1])
-        assert frames_until_asleep(cloth, 200)   # held still, it sleeps again
+        assert frames_until_asleep(cloth, 400)   # held still, it sleeps again
         release(cloth, k)
     elif op == 'pin':
         pin(cloth, k)
     else:
         unpin(cloth, 0)
     assert not cloth.asleep
-    work = cloth.projections
+    steps, sweeps = cloth.steps, cloth.sweeps
     frame(cloth)
-    assert cloth.projections > work
+    assert cloth.steps > steps and cloth.sweeps > sweeps
 
 
 def test_a_drag_wakes_it_and_the_cloth_follows_then_rests_again():
     cloth = load(curtain(6, damping=2.0))
-    assert frames_until_asleep(cloth, 200)
+    assert frames_until_asleep(cloth, 400)
     k = 32
     x, y = cloth.pos[2 * k], cloth.pos[2 * k + 1]
-    nx = cloth.pos[2 * (k + 1)]             # its neighbour in the row
+    nx = cloth.pos[2 * (k - 1)]             # its neighbour in the row, behind it
     grab(cloth, k, x, y)
     for i in range(30):
         move(cloth, k, x + 0.01 * i, y + 0.005 * i)
         frame(cloth)
         assert not cloth.asleep
-    assert cloth.pos[2 * (k + 1)] - nx > 0.1   # dragged 0.29 m to the right, it followed
+    # dragged 0.29 m to the right, the neighbour it pulls followed (the one ahead of it is
+    # pushed by nothing: the fabric's springs pull only)
+    assert cloth.pos[2 * (k - 1)] - nx > 0.1
     release(cloth, k)
     slept = frames_until_asleep(cloth, 2000)
     assert slept is not None and slept > 60, slept
-    # Asleep where it rests: a curtain hangs as its rest grid (cloth/reference.py).
-    worst = max(math.hypot(cloth.pos[2 * j] - x0, cloth.pos[2 * j + 1] - y0)
-                for j, (x0, y0) in enumerate(rest_grid(cloth.cols, cloth.rows, cloth.spacing)))
+    # Asleep where it rests: at the curtain's exact equilibrium (cloth/reference.py statics),
+    # to a millimetre (measured: 0.13 mm).
+    ref, info = statics(cloth)
+    assert info['residual'] < 1e-8
+    worst = max(math.hypot(cloth.pos[2 * j] - ref[j][0], cloth.pos[2 * j + 1] - ref[j][1])
+                for j in range(cloth.n_verts))
     assert worst < 1e-3, worst
 
 
@@ -87,7 +122,8 @@ def test_a_hand_held_still_lets_the_cloth_sleep():
 
 
 def pendulum(length, damping=0.0, **extra):
-    # Released horizontally: the bob swings through 180 degrees.
+    # Released horizontally: the bob swings through 180 degrees (its spring, the default
+    # fabric's, stretches by 0.4 mm at the bottom of the swing).
     return load(scene(cols=2, rows=1, spacing=length, pins=[0], damping=damping, **extra))
 
 
@@ -115,31 +151,65 @@ def test_a_damped_pendulum_sleeps_only_once_its_swing_is_invisible():
     assert slept > 60 * 20
 
 
-def test_sleep_off_and_the_seed_method_never_sleep():
-    for text in [curtain(6, damping=1.0, sleep=False),
-                 curtain(6, solver='jakobsen', damping=1.0)]:
-        cloth = load(text)
-        assert frames_until_asleep(cloth, 300) is None
+@pytest.mark.parametrize('solver', ['vbd', 'xpbd', 'jakobsen'])
+def test_sleep_off_never_sleeps_and_sleep_on_sleeps_under_every_solver(solver):
+    """`sleep` is every solver's (the seed's method too, since the membrane): off, a cloth at
+    rest is stepped for ever; on, it sleeps."""
+    cloth = load(curtain(6, solver=solver, damping=1.0, sleep=False))
+    assert frames_until_asleep(cloth, 600) is None
+    assert frames_until_asleep(load(curtain(6, solver=solver, damping=1.0)), 600) is not None
 
 
 def test_sleeping_leaves_a_settled_cloth_where_it_would_have_been():
-    # Two corners, slack: the hang settles slowly and keeps a tiny limit cycle of the solver.
-    keys = dict(cols=16, rows=16, spacing=1 / 15, pins=[0, 15], damping=1.0,
-                actions=[{'frame': 0, 'op': 'grab', 'vertex': 15, 'to': [0.8, 0.0]},
-                         {'frame': 0, 'op': 'pin', 'vertex': 15},
-                         {'frame': 0, 'op': 'release', 'vertex': 15}])
-    asleep = load(scene(**keys))
-    awake = load(scene(sleep=False, **keys))
-    from cloth.script import apply_action
-    for c in (asleep, awake):
-        for a in c.scene.actions:
-            apply_action(c, a)
-    slept = frames_until_asleep(asleep, 3000)
-    assert slept is not None
-    step(awake, slept)
+    """The Two corners preset, its right clamp carried in (the top edge sags slack): asleep,
+    it stays within the sleep's bounds of where it would have gone on to, awake, which is the
+    exact equilibrium (cloth/reference.py statics)."""
+    asleep = load(preset('corners', 10))
+    awake = load(preset('corners', 10, sleep=False))
+    nxt = apply_due(asleep, 0, 0)
+    slept = None
+    for f in range(1, 3001):
+        frame(asleep)
+        nxt = apply_due(asleep, nxt, f)
+        if asleep.asleep:
+            slept = f
+            break
+    assert slept is not None and slept > 60      # after the carry (60 frames)
+    nxt = apply_due(awake, 0, 0)
+    for f in range(1, slept + 601):
+        frame(awake)
+        nxt = apply_due(awake, nxt, f)
     step(asleep, 600)
-    step(awake, 600)
     worst = max(math.hypot(asleep.pos[2 * k] - awake.pos[2 * k],
                            asleep.pos[2 * k + 1] - awake.pos[2 * k + 1])
                 for k in range(asleep.n_verts))
-    assert worst < 2e-3, worst                # metres, on a 1 m cloth: 2 px at 1000 px/m
+    assert worst < 2e-3, worst                # metres, on a 1.6 m cloth: 2 px at 1000 px/m
+    ref, info = statics(awake)
+    assert info['residual'] < 1e-8
+    assert max(math.hypot(awake.pos[2 * k] - ref[k][0], awake.pos[2 * k + 1] - ref[k][1])
+               for k in range(awake.n_verts)) < 1e-5
+
+
+# The default solver counts an obstacle's reaction as unbalanced force (its imbalance is the
+# force each vertex found before its step, and keep_out then takes it back out): a strip lying
+# still on a box has an imbalance of 1 (its whole weight), 100 times SLEEP_IMBALANCE, and never
+# sleeps; at 1, and above integrate.UNBALANCED with any more load, every step is backward Euler
+# with extra rounds. (It also slides: tests/test_obstacles.py.)
+@pytest.mark.parametrize('solver', [pytest.param('vbd', marks=pytest.mark.xfail(strict=True, reason=(
+    'core bug: vbd counts the contact reaction in its imbalance: a cloth resting on an obstacle '
+    'never sleeps'))), 'xpbd', 'jakobsen'])
+def test_a_cloth_lying_on_a_box_sleeps(solver):
+    cloth = load(scene(cols=6, rows=1, spacing=0.1, pins=[], damping=2, solver=solver,
+                       obstacles=[{'box': [-1, -0.6, 2, -0.1]}]))
+    assert frames_until_asleep(cloth, 600) is not None
+    assert min(cloth.pos[2 * k + 1] for k in range(6)) >= -0.1 - 1e-12
+
+
+def test_the_drift_bound_is_a_fraction_of_the_extent():
+    """The bounds are fractions of the cloth's extent (the page fits it to the screen): a
+    cloth ten times the size may move ten times as far a frame and still sleep."""
+    assert SLEEP_MOTION < SLEEP_DRIFT < 1e-2
+    small = load(curtain(6, damping=1.0))
+    big = load(scene(cols=6, rows=6, spacing=2.0, pins=list(range(6)), damping=1.0))
+    assert big.still_motion2 == pytest.approx(small.still_motion2 * 100.0)
+    assert big.drift2 == pytest.approx(small.drift2 * 100.0)
