@@ -7,8 +7,9 @@ the same. Only in a scene whose air moves: still air costs nothing (its stage is
 import math
 
 # At most this share of the air's velocity across an edge relative to its ends is given to
-# each end in one frame: a vertex has up to eight edges, and a stronger push would overshoot
-# the air (an explicit drag is stable only while drag dt / mass stays small; capped, any is).
+# each end in one frame: a vertex has up to four structural edges, and four such shares are half
+# that velocity, short of overshooting the air (an explicit drag is stable only while
+# drag dt / mass stays small; capped, any is).
 AIR_MOST = 0.125
 # Gusts: the wind times 1 + amplitude * GUST_PEAK * p (1 - p) (1 - 2p), p the phase in the
 # period: a smooth wave from -1 to 1, polynomial so that both runtimes compute it to the bit.
@@ -26,14 +27,19 @@ def feel_air(cloth):
     air[0] = cloth.scene.wind_x * f
     air[1] = cloth.scene.wind_y * f
     air[2] = 0.5 * cloth.scene.drag * cloth.spacing * cloth.dt
-    blow(cloth.pos, cloth.vel, cloth.inv_mass, cloth.edge_a, cloth.edge_b, cloth.n_edges, air)
+    blow(cloth.pos, cloth.vel, cloth.vel_prev, cloth.inv_mass, cloth.edge_a, cloth.edge_b,
+         cloth.n_struct, air)
 
 
-def blow(pos, vel, inv_mass, edge_a, edge_b, n_edges, air):
-    """Each edge of length L stands for a strip of cloth one spacing s wide: the air moving at
-    v_rel relative to it (its ends' mean velocity) pushes it with drag L s (v_rel . n) n along
-    its normal n, half on each end, over the frame dt: each end's velocity changes by
-    k w L (v_rel . n) n, k = drag s dt / 2, w its inverse mass (capped: AIR_MOST).
+def blow(pos, vel, vel_prev, inv_mass, edge_a, edge_b, n_edges, air):
+    """Each structural edge of length L stands for a strip of cloth one spacing s wide (the
+    rows' edges take the air across the rows, the columns' across the columns: per area, as
+    the key says; the diagonals stand for shear, not for more cloth): the air moving at v_rel
+    relative to it (its ends' mean velocity) pushes it with drag L s (v_rel . n) n along its
+    normal n, half on each end, over the frame dt: each end's velocity changes by
+    k w L (v_rel . n) n, k = drag s dt / 2, w its inverse mass (capped: AIR_MOST). The change
+    goes into the velocity BDF2 remembers from the last step too: its next step extrapolates
+    4/3 v - 1/3 v-, and an impulse in v alone would count 4/3 of itself.
     air = [wind x, wind y, k]."""
     sqrt = math.sqrt
     wx = air[0]
@@ -68,3 +74,7 @@ def blow(pos, vel, inv_mass, edge_a, edge_b, n_edges, air):
         vel[i + 1] += ca * across * ny
         vel[j] += cb * across * nx
         vel[j + 1] += cb * across * ny
+        vel_prev[i] += ca * across * nx
+        vel_prev[i + 1] += ca * across * ny
+        vel_prev[j] += cb * across * nx
+        vel_prev[j + 1] += cb * across * ny

@@ -36,16 +36,18 @@ UNBALANCED = 0.1
 def configure(cloth, scene):
     """The step's constants of the integrator (cloth.h is the substep size)."""
     cloth.damping = scene.damping
-    order(cloth, 2)
+    order(cloth, cloth.max_order)
 
 
 def order(cloth, k):
-    """Steps of BDF2 (k = 2) or backward Euler (k = 1) from now on."""
+    """Steps of BDF2 (k = 2), backward Euler (k = 1) or position Verlet (k = 0: XPBD's own,
+    Macklin et al. 2016: the target x + v h + g h^2 / 2 with damping explicit, and after the
+    step v = (x+ - x) / h + g h / 2, which makes a free fall exact) from now on."""
     hp = cloth.h * 2.0 / 3.0 if k == 2 else cloth.h
     cloth.order = k
     cloth.h_bdf = hp
     cloth.keep = 1.0 / (1.0 + cloth.damping * hp)
-    cloth.w_scale = (1.0 + cloth.damping * hp) / (hp * hp)
+    cloth.w_scale = (1.0 + cloth.damping * hp) / (hp * hp) if k > 0 else 1.0 / (hp * hp)
 
 
 def rest_at(cloth, k):
@@ -105,7 +107,9 @@ def predict(cloth):
     the two guesses from step to step and never settles). A falling piece's guess has it: its
     springs at rest pull on nothing there, and the fall is exact (without it, sweeps slowed by
     its springs pulled a free 6x4 cloth down unevenly: 1.5 cm sideways in a second)."""
-    k2 = 1 if cloth.imbalance > UNBALANCED else 2
+    k2 = cloth.max_order
+    if k2 == 2 and cloth.imbalance > UNBALANCED:
+        k2 = 1
     if k2 != cloth.order:
         order(cloth, k2)
     pos = cloth.pos
@@ -118,8 +122,10 @@ def predict(cloth):
     hp = cloth.h_bdf
     h = cloth.h
     keep = cloth.keep
-    ax = keep * cloth.gravity_x * hp * hp
-    ay = keep * cloth.gravity_y * hp * hp
+    gx = cloth.gravity_x * hp * hp
+    gy = cloth.gravity_y * hp * hp
+    ax = gx * (keep if k2 > 0 else 0.5)
+    ay = gy * (keep if k2 > 0 else 0.5)
     falling = cloth.falling
     for k in range(cloth.n_verts):
         i = k + k
@@ -140,6 +146,11 @@ def predict(cloth):
             by = (4.0 * y - prev[i + 1]) / 3.0
             px = bx + hp * keep * (4.0 * vx - vold[i]) / 3.0
             py = by + hp * keep * (4.0 * vy - vold[i + 1]) / 3.0
+        elif k2 == 0:
+            bx = x
+            by = y
+            px = x + keep * (hp * vx - 0.5 * gx) + 0.5 * gx
+            py = y + keep * (hp * vy - 0.5 * gy) + 0.5 * gy
         else:
             bx = x
             by = y
@@ -162,17 +173,20 @@ def predict(cloth):
 
 
 def finish(cloth):
-    """The new velocities, v+ = (x+ - base) / h' (a fixed vertex has none)."""
+    """The new velocities, v+ = (x+ - base) / h' (Verlet's with g h / 2 more; a fixed vertex
+    has none)."""
     pos = cloth.pos
     base = cloth.base
     vel = cloth.vel
     fixed = cloth.fixed
     inv = 1.0 / cloth.h_bdf
+    hx = 0.5 * cloth.gravity_x * cloth.h_bdf if cloth.order == 0 else 0.0
+    hy = 0.5 * cloth.gravity_y * cloth.h_bdf if cloth.order == 0 else 0.0
     for k in range(cloth.n_verts):
         i = k + k
         if fixed[k] != 0:
             vel[i] = 0.0
             vel[i + 1] = 0.0
             continue
-        vel[i] = (pos[i] - base[i]) * inv
-        vel[i + 1] = (pos[i + 1] - base[i + 1]) * inv
+        vel[i] = (pos[i] - base[i]) * inv + hx
+        vel[i + 1] = (pos[i + 1] - base[i + 1]) * inv + hy

@@ -20,6 +20,8 @@ NAME = 'jakobsen'
 LABEL = 'Jakobsen (the seed\'s method)'
 # substeps, iterations (sweeps a step), corrections (none)
 BUDGET = [1, 20, 0]
+# Its own Verlet, not cloth/integrate.py's steps.
+ORDER = 0
 
 
 def prepare(cloth):

@@ -33,6 +33,7 @@ class Cloth:
         self.keep = 1.0
         self.w_scale = 1.0
         self.order = 2            # BDF2, or 1 (backward Euler): integrate.predict
+        self.max_order = 2        # the solver's (its ORDER)
         self.damping = 0.0
         self.gravity_x = 0.0
         self.gravity_y = 0.0

@@ -70,9 +70,10 @@ def configure(cloth, scene):
     cloth.solver = solver_index(scene.solver)
     cloth.seed = scene.solver == SEED_SOLVER
     cloth.tear_limit[0] = (1.0 + scene.tear) * (1.0 + scene.tear)
+    solver = REGISTRY[cloth.solver]
+    cloth.max_order = solver[0].ORDER
     integrate.configure(cloth, scene)
     cloth.mg_stale = True
-    solver = REGISTRY[cloth.solver]
     solver[0].prepare(cloth)
     cloth.frame_stages = []
     if scene.drag > 0.0 and (scene.wind_x != 0.0 or scene.wind_y != 0.0):

@@ -41,6 +41,8 @@ NAME = 'vbd'
 LABEL = 'Vertex descent + multigrid'
 # substeps, iterations (sweeps a step) and coarse corrections a step
 BUDGET = [1, 5, 1]
+# Its steps are BDF2 (cloth/integrate.py), backward Euler after one left off balance.
+ORDER = 2
 # The coarse operators are reused for this many steps: they are the Hessian where the cloth
 # was, and a rebuild costs about six sweeps (measured at 60x60); a cloth that moved more than a
 # spacing since gets new ones at once.
