@@ -1,9 +1,12 @@
 """python -m cloth run SCENE.json [--frames N] [--trace]: print what `cloth.api.run` returns.
+python -m cloth keys: every scene key, its range, unit and default, as a Markdown table (from
+cloth/keys.py KEYS, where each key is declared once).
 
 CPython only (never transpiled). Bad input exits with status 2 and one line naming the key.
 """
 
 import argparse
+import json
 import os
 import shutil
 import sys
@@ -12,7 +15,8 @@ import tempfile
 from cloth.api import run, load, start, frames_of, simulate, result_of
 from cloth.host import to_json
 from cloth.values import SceneError
-from cloth.keys import MAX_SCENE_BYTES
+from cloth.keys import MAX_SCENE_BYTES, KEYS
+from cloth.solvers import SOLVERS
 from cloth.scene import too_large
 
 
@@ -33,7 +37,11 @@ def main(argv=None):
     p_run.add_argument('--trace', action='store_true', help='add the positions after every frame')
     p_run.add_argument('--panel', type=int, default=None,
                        help='run panel N (1 = the first) of the scene\'s "compare" list')
+    sub.add_parser('keys', help='print every scene key, its range and default (Markdown)')
     args = parser.parse_args(argv)
+    if args.command == 'keys':
+        sys.stdout.write(keys_table())
+        return 0
     if sys.stdout is None or (args.scene == '-' and sys.stdin is None):
         # A closed stream (`>&-`, `<&-`): Python makes it None.
         say('error: ' + ('output: standard output is closed' if sys.stdout is None else
@@ -82,6 +90,29 @@ def main(argv=None):
         say('error: output: cannot write the result: ' + (err.strerror or str(err)))
         return 1
     return 0
+
+
+def keys_table():
+    """KEYS as a Markdown table: key, what it takes, unit, default (per solver where the
+    solvers differ), settable live in the page."""
+    def shown(v):
+        return 'none' if v is None or v == -1 else json.dumps(v)
+    lines = ['| key | takes | unit | default | live |', '|---|---|---|---|---|']
+    for k in KEYS:
+        takes = k.words or {'pins': 'a list of vertex indices', 'choice': ' or '.join(SOLVERS),
+                            'actions': 'a list of actions (grab, move, release, pin, unpin, set, '
+                                       'cut, obstacle)',
+                            'bool': 'true or false', 'string': 'a label',
+                            'compare': 'a list of 2 to 4 objects of panel keys',
+                            'obstacles': 'a list of {"circle": [x, y, r]} or {"box": [x0, y0, x1, y1]}, '
+                                         'each with an optional "friction" from 0 to 1'}.get(k.kind, k.kind)
+        if k.by_solver is not None:
+            default = ', '.join('%s %s' % (SOLVERS[i], k.by_solver[i]) for i in range(len(SOLVERS)))
+        else:
+            default = shown(k.fallback)
+        lines.append('| `%s` | %s | %s | %s | %s |' % (k.key, takes, k.unit, default,
+                                                      'yes' if k.live else ''))
+    return '\n'.join(lines) + '\n'
 
 
 def quiet_stdout():

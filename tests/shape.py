@@ -1,43 +1,21 @@
-"""Exact references for the shape of a settled cloth (cloth/reference.py, which the benchmark
-uses too), and disturbances to recover from, shared by the CPython and the browser tests.
+"""Disturbances for a settled cloth to recover from, shared by the CPython tests
+(tests/test_shape.py) and the browser tests (tests/browser/test_shape_page.py).
 
 Shape, not only strain: strain says the edges have their rest length, not that the cloth hangs
-where the physics puts it. The references here are exact equilibria of the seed's model (unit
-masses, inextensible structural edges, gravity -y):
-- a curtain (the whole top row pinned) hangs as the rest grid;
-- a grid hung from its two top corners `span` apart: every cell is a rhombus, so vertex
-  (r, c) = U_c + V_r (U_c the sum of the first c edges of the top row, V_r of a column), and
-  the potential energy rows * sum(U_c.y) + cols * sum(V_r.y) is least with straight columns
-  (V_r = (0, -r h)) under the top row's discrete catenary, a chain of `cols` nodes that each
-  carry one column: link k at angle theta_k, tan(theta_k) = c ((cols - 2) / 2 - k), with c
-  from a 1-D root find on the span.
+where the physics puts it. How a settled cloth hangs against the exact statics is
+tests/test_shape.py's first test (cloth/reference.py); here, a disturbed cloth must come back
+to the hang of the same cloth left alone.
 """
 import json
 import math
 
-from cloth.reference import slack_hang, rest_grid  # noqa: F401 (used by the tests)
+from cloth.keys import MODEL
 
 
 def shape_error(positions, reference, width):
     """(RMS, max) distance between matching vertices, in units of `width`."""
     d2 = [(p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2 for p, q in zip(positions, reference)]
     return math.sqrt(sum(d2) / len(d2)) / width, math.sqrt(max(d2)) / width
-
-
-def slack_scene(n, span=0.8, move_frames=300, **keys):
-    """An n x n cloth 1 m wide whose right corner is carried in to `span` over `move_frames`
-    frames (slowly, so it sags rather than folds), then pinned there and let go."""
-    h = 1.0 / (n - 1)
-    actions = [{'frame': 0, 'op': 'grab', 'vertex': n - 1}]
-    for f in range(1, move_frames + 1):
-        actions.append({'frame': f, 'op': 'move', 'vertex': n - 1,
-                        'to': [1.0 + (span - 1.0) * f / move_frames, 0.0]})
-    actions += [{'frame': move_frames, 'op': 'pin', 'vertex': n - 1},
-                {'frame': move_frames, 'op': 'release', 'vertex': n - 1}]
-    scene = dict(cols=n, rows=n, spacing=h, pins=[0, n - 1], damping=1.0, sleep=False,
-                 actions=actions)
-    scene.update(keys)
-    return scene
 
 
 # Disturbances of a 10 x 8 cloth, 1 m wide, hung from its top corners (damping 1/s, as the
@@ -62,7 +40,7 @@ DISTURBANCES = {
 
 
 def hang_scene(**keys):
-    scene = dict(cols=COLS, rows=ROWS, spacing=1.0 / (COLS - 1), pins=[0, COLS - 1],
+    scene = dict(model=MODEL, cols=COLS, rows=ROWS, spacing=1.0 / (COLS - 1), pins=[0, COLS - 1],
                  damping=1.0, sleep=False)
     scene.update(keys)
     return scene
@@ -73,7 +51,7 @@ def gesture_actions(vertex, path, start=HANG, fixture=False):
     vertex hangs, which the caller gives as the first point's base), then release. With
     `fixture` the vertex is pinned before the grab and unpinned after the release: a dragged
     pin goes exactly where the hand puts it, however fast (a free vertex's hand has a finite
-    strength and speed, cloth/sim.py HAND_FORCE), the most violent gesture a person can make."""
+    strength, cloth/hands.py HAND_FORCE), the most violent gesture a person can make."""
     end = start + 1 + len(path)
     actions = [{'frame': start, 'op': 'pin', 'vertex': vertex}] if fixture else []
     actions.append({'frame': start, 'op': 'grab', 'vertex': vertex})
@@ -108,11 +86,10 @@ def recovery(positions, undisturbed, pins):
     return rms, worst, above
 
 
-# These scenes hang their top row taut (the pins a rest width apart). A straight chain of
-# length L between points L apart can bow by up to sqrt(3 tol / 8) L without any link
-# exceeding the solver's tolerance tol (1e-4: 0.6% of L), and after a disturbance the top row
-# may rest bowed up by that much (measured: 1-3 mm on the 1 m cloth); a row folded back over
-# the pins stands about 10% of the width above them.
+# These scenes hang their top row taut (the pins a rest width apart): after a disturbance the
+# top row may rest bowed up a little (a tension-only row between pins a rest length apart
+# carries no force when bowed: it settles where the last motion left it, millimetres on the
+# 1 m cloth); a row folded back over the pins stands about 10% of the width above them.
 ABOVE = 0.01
 
 

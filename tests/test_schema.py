@@ -250,3 +250,18 @@ def test_shear_is_a_number_in_model_2():
     # In model 1 shear was a switch (whether cells had a diagonal): true or false, left out.
     with pytest.raises(SceneError, match='^shear: must be true or false'):
         parse_scene(json.dumps(dict(OLD, shear=50)))
+
+
+def test_the_keys_table_lists_every_declared_key_once():
+    """`python -m cloth keys` (the README points to it) is derived from KEYS: every key, once,
+    with its words."""
+    import subprocess
+    import sys
+    from cloth.keys import KEYS as DECLARED
+    out = subprocess.run([sys.executable, '-m', 'cloth', 'keys'], capture_output=True, text=True,
+                         check=True).stdout
+    names = [line.split('`')[1] for line in out.splitlines()[2:]]
+    assert names == [k.key for k in DECLARED]
+    from cloth.fabrics import fabric, DEFAULT_FABRIC
+    assert '| `stretch` | from 1 to 1000000 N/m (the stretch stiffness) | N/m | %s | yes |' % (
+        fabric(DEFAULT_FABRIC)[2]) in out

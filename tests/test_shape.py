@@ -1,50 +1,63 @@
-"""The shape of a settled cloth against exact references, and recovery after disturbances
-(tests/shape.py has the references and the gestures). The same scenes run in the page in
+"""The shape of a settled cloth against the exact statics, and recovery after disturbances
+(tests/shape.py has the gestures). The same disturbances run in the page in
 tests/browser/test_shape_page.py."""
 import json
 
+import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st, HealthCheck
 
 import shape
 from cloth.api import run, load, simulate
+from cloth.fabrics import FABRICS
+from cloth.presets import preset_scene
+from cloth.reference import statics, tension_strain, away_from_fixed, field_error
+from cloth.step import frame
 
 
 def positions(scene, frames):
     return [tuple(p) for p in json.loads(run(json.dumps(scene), frames))['positions']]
 
 
-def test_slack_hang_reference_is_an_equilibrium_of_the_chain():
-    # The reference itself: the top row spans `span`, every link has the rest length, the
-    # columns hang straight, and it is symmetric.
-    n, h, span = 9, 0.125, 0.8
-    ref = shape.slack_hang(n, n, h, span)
-    assert ref[n - 1][0] == pytest.approx(span, abs=1e-12)
-    for c in range(n - 1):
-        (x0, y0), (x1, y1) = ref[c], ref[c + 1]
-        assert ((x1 - x0) ** 2 + (y1 - y0) ** 2) ** 0.5 == pytest.approx(h, abs=1e-12)
-        assert y0 + y1 == pytest.approx(ref[n - 1 - c][1] + ref[n - 2 - c][1], abs=1e-12)
-    assert ref[3 * n + 4] == pytest.approx((ref[4][0], ref[4][1] - 3 * h), abs=1e-12)
+@pytest.mark.parametrize('fabric', [f[0] for f in FABRICS])
+@pytest.mark.parametrize('name', ['corners', 'curtain', 'towel'])
+def test_every_fabric_comes_to_rest_on_its_exact_statics(name, fabric):
+    """Issue #39's claim at a size CPython runs in seconds (the benchmark measures 30 to 200 in
+    the page): the preset in each fabric of the menu comes to rest (asleep: every vertex still
+    and its forces balanced) within 20 s, and there its strain field away from the clamps is
+    within 1% of the exact statics' (Newton on the same energy, from where it rests) and its
+    shape within 0.5% of the width."""
+    n = 10
+    f = next(f for f in FABRICS if f[0] == fabric)
+    obj = preset_scene(name, n, n)
+    obj['stretch'], obj['shear'], obj['density'] = f[2], f[3], f[4]
+    cloth = load(json.dumps(obj))
+    frames = 0
+    while not cloth.asleep and frames < 1200:
+        frame(cloth)
+        frames += 1
+    assert cloth.asleep, frames
+    x = np.array(cloth.pos, dtype=float).reshape(-1, 2)
+    exact, info = statics(cloth)
+    assert info['residual'] < 1e-6
+    mask = away_from_fixed(cloth, exact, 0.1)
+    assert mask.sum() > 0.8 * len(mask)
+    error = field_error(tension_strain(cloth, x), tension_strain(cloth, exact), mask)
+    width = (cloth.cols - 1) * cloth.spacing
+    shape_off = float(np.sqrt(((x - exact) ** 2).sum(1).mean())) / width
+    assert error < 0.01 and shape_off < 0.005, (error, shape_off)
 
 
-def test_the_default_hangs_slack_where_the_physics_says():
-    # 16 x 16 in CPython (the benchmark measures 30, 60 and 120 in the page).
-    n = 16
-    scene = shape.slack_scene(n, move_frames=180)
-    exact = shape.slack_hang(n, n, 1.0 / (n - 1), 0.8)
-    rms, worst = shape.shape_error(positions(scene, 180 + 720), exact, 1.0)
-    assert rms < 0.005, (rms, worst)
-    # The default without its parallelogram cells and line solves hangs visibly elsewhere
-    # (measured 1.9% of the width, 8% at worst): the test can tell.
-    plain = positions(dict(scene, cells=False, lines=False), 180 + 720)
-    assert shape.shape_error(plain, exact, 1.0)[0] > 4 * rms
-
-
-def test_a_curtain_hangs_as_the_rest_grid():
-    n = 12
-    scene = dict(cols=n, rows=n, spacing=1 / (n - 1), pins=list(range(n)), damping=1.0)
-    rms, worst = shape.shape_error(positions(scene, 300), shape.rest_grid(n, n, 1 / (n - 1)), 1.0)
-    assert worst < 1e-4
+def test_a_cloth_stopped_short_of_its_statics_is_told_apart():
+    """The check above can fail: the same curtain stopped after a few frames, still falling
+    into its hang, is far from the exact field."""
+    cloth = load(json.dumps(preset_scene('curtain', 10, 10)))
+    for _ in range(3):
+        frame(cloth)
+    x = np.array(cloth.pos, dtype=float).reshape(-1, 2)
+    exact, _ = statics(cloth)
+    mask = away_from_fixed(cloth, exact, 0.1)
+    assert field_error(tension_strain(cloth, x), tension_strain(cloth, exact), mask) > 0.1
 
 
 def hung_at(frame, **keys):
@@ -87,14 +100,7 @@ def test_the_cloth_comes_back_after_a_zigzag_drag():
     check_recovery(disturbed_scene(v, path))
 
 
-def test_without_parallelogram_cells_the_flicked_cloth_stays_folded():
-    # The recovery test can fail: structural edges alone keep the folds of the same flick.
-    vertex, path = gesture('flick-up-1.4m', hung_at(shape.HANG))
-    with pytest.raises(AssertionError):
-        check_recovery(disturbed_scene(vertex, path, cells=False), cells=False)
-
-
-@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=3, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(vertex=st.integers(shape.COLS, shape.COLS * shape.ROWS - 1),
        dx=st.floats(-2.0, 2.0), dy=st.floats(-2.0, 2.0), frames=st.integers(1, 30),
        fixture=st.booleans())
