@@ -254,9 +254,9 @@ def sweep(cloth, forward, last):
             d = sqrt(dx * dx + dy * dy)
             along = (mx * dx + my * dy) / d
             if along > d - reach:
-                t = (d - reach) / along
-                mx *= t
-                my *= t
+                short = (d - reach) / along
+                mx *= short
+                my *= short
         pos[ii] = xi + mx
         pos[ii + 1] = yi + my
         if contact:
