@@ -186,6 +186,7 @@ def refix(cloth):
                 load2 += cloth.mass[k] * cloth.mass[k] * g2
     cloth.load2 = load2
     count = label_pieces(cloth)
+    cloth.n_pieces = count
     held = cloth.piece_held
     for p in range(count):
         held[p] = 0

@@ -55,6 +55,8 @@ class Cloth:
         self.piece = i32(n)       # its connected piece (topology.label_pieces)
         self.stack = i32(n)
         self.piece_held = i32(n)
+        self.n_pieces = 0
+        self.piece_sum = f64(3 * n)   # per piece: mass, and its mass-weighted offset (vbd)
         self.mass = f64(n)
         self.inv_mass = f64(n)    # 1 / mass, 0 where fixed (obstacles and air read it)
         self.fixed = i32(n)
