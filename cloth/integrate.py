@@ -72,25 +72,33 @@ def rest_at(cloth, k):
 def restart(cloth):
     """A history for every vertex from its velocity now, as if gravity alone had acted over the
     last step: after a change of the step size, which makes the stored one meaningless."""
+    for k in range(cloth.n_verts):
+        restart_at(cloth, k)
+
+
+def restart_at(cloth, k):
+    """Vertex k's history from its velocity now, as if gravity alone had acted over the last
+    step (a fixed vertex: standing still). Also for a vertex whose piece a cut has just set
+    free: its history held the springs' pull, which a BDF2 step would go on extrapolating (a
+    piece cut off while it hung fell g h / 2 slower than free fall)."""
     h = cloth.h
-    gx = cloth.gravity_x
-    gy = cloth.gravity_y
     pos = cloth.pos
     vel = cloth.vel
-    for k in range(cloth.n_verts):
-        i = k + k
-        if cloth.fixed[k] != 0:
-            cloth.prev[i] = pos[i]
-            cloth.prev[i + 1] = pos[i + 1]
-            vel[i] = 0.0
-            vel[i + 1] = 0.0
-            cloth.vel_prev[i] = 0.0
-            cloth.vel_prev[i + 1] = 0.0
-            continue
-        cloth.prev[i] = pos[i] - vel[i] * h + 0.5 * gx * h * h
-        cloth.prev[i + 1] = pos[i + 1] - vel[i + 1] * h + 0.5 * gy * h * h
-        cloth.vel_prev[i] = vel[i] - gx * h
-        cloth.vel_prev[i + 1] = vel[i + 1] - gy * h
+    i = k + k
+    if cloth.fixed[k] != 0:
+        cloth.prev[i] = pos[i]
+        cloth.prev[i + 1] = pos[i + 1]
+        vel[i] = 0.0
+        vel[i + 1] = 0.0
+        cloth.vel_prev[i] = 0.0
+        cloth.vel_prev[i + 1] = 0.0
+        return
+    gx = cloth.gravity_x
+    gy = cloth.gravity_y
+    cloth.prev[i] = pos[i] - vel[i] * h + 0.5 * gx * h * h
+    cloth.prev[i + 1] = pos[i + 1] - vel[i + 1] * h + 0.5 * gy * h * h
+    cloth.vel_prev[i] = vel[i] - gx * h
+    cloth.vel_prev[i + 1] = vel[i + 1] - gy * h
 
 
 def predict(cloth):

@@ -55,6 +55,7 @@ class Cloth:
         self.piece = i32(n)       # its connected piece (topology.label_pieces)
         self.stack = i32(n)
         self.piece_held = i32(n)
+        self.was_falling = i32(n)     # `falling` before a cut (step.broke)
         self.n_pieces = 0
         self.piece_sum = f64(3 * n)   # per piece: mass, and its mass-weighted offset (vbd)
         self.mass = f64(n)

@@ -142,10 +142,16 @@ def cut(cloth, x0, y0, x1, y1):
 
 def broke(cloth):
     """Edges were marked broken: they go, and what follows from the new topology (the grips
-    never reach across a cut; the coarse operators are stale)."""
+    never reach across a cut; the coarse operators are stale; a piece the cut set free falls
+    from the velocity it has, its history restarted: integrate.restart_at)."""
     cloth.broken += topology.remove_marked(cloth)
     cloth.mg_stale = True
+    for k in range(cloth.n_verts):
+        cloth.was_falling[k] = cloth.falling[k]
     hands.regrip(cloth)
+    for k in range(cloth.n_verts):
+        if cloth.falling[k] != 0 and cloth.was_falling[k] == 0:
+            integrate.restart_at(cloth, k)
     hands.wake(cloth)
 
 
