@@ -22,7 +22,7 @@ from cloth.presets import preset_scene
 from cloth.reference import statics, tension_strain, away_from_fixed, field_error
 from cloth.solvers import DEFAULT_SOLVER, SEED_SOLVER
 
-RUN_SECONDS = 20.0
+RUN_SECONDS = 10.0
 AWAY = 0.1          # m: the field is compared farther than this from every fixed vertex
 REST = 0.01         # m/s: at rest when every vertex is slower
 SCENES = ['corners', 'curtain', 'towel']
@@ -30,24 +30,17 @@ SIZES = [30, 60, 120, 200]
 QUICK_SIZES = [30]
 QUICK_SECONDS = 5.0
 
-# [label, family, scene keys]
+# [label, family, scene keys]: each solver at two or three budgets around its default (a
+# configuration at 200x200 costs minutes of the run: more budgets are a line each here).
 CONFIGS = [
-    ['jakobsen i10', 'jakobsen', {'solver': 'jakobsen', 'iterations': 10}],
     ['jakobsen i20 (the seed)', 'jakobsen', {'solver': 'jakobsen', 'iterations': 20}],
-    ['jakobsen i40', 'jakobsen', {'solver': 'jakobsen', 'iterations': 40}],
     ['jakobsen i80', 'jakobsen', {'solver': 'jakobsen', 'iterations': 80}],
-    ['xpbd s8', 'xpbd', {'solver': 'xpbd', 'substeps': 8}],
     ['xpbd s16', 'xpbd', {'solver': 'xpbd', 'substeps': 16}],
     ['xpbd s32', 'xpbd', {'solver': 'xpbd', 'substeps': 32}],
-    ['xpbd s64', 'xpbd', {'solver': 'xpbd', 'substeps': 64}],
-    ['vbd i5 c0', 'vbd, no correction', {'solver': 'vbd', 'iterations': 5, 'corrections': 0}],
     ['vbd i10 c0', 'vbd, no correction', {'solver': 'vbd', 'iterations': 10, 'corrections': 0}],
-    ['vbd i20 c0', 'vbd, no correction', {'solver': 'vbd', 'iterations': 20, 'corrections': 0}],
     ['vbd i40 c0', 'vbd, no correction', {'solver': 'vbd', 'iterations': 40, 'corrections': 0}],
     ['vbd i3 c1', 'vbd + coarse grid', {'solver': 'vbd', 'iterations': 3, 'corrections': 1}],
     ['default (vbd i5 c1)', 'vbd + coarse grid', {'solver': 'vbd'}],
-    ['vbd i8 c1', 'vbd + coarse grid', {'solver': 'vbd', 'iterations': 8, 'corrections': 1}],
-    ['vbd i5 c2', 'vbd + coarse grid', {'solver': 'vbd', 'iterations': 5, 'corrections': 2}],
     ['vbd i10 c2', 'vbd + coarse grid', {'solver': 'vbd', 'iterations': 10, 'corrections': 2}],
 ]
 QUICK_CONFIGS = ['jakobsen i20 (the seed)', 'xpbd s16', 'vbd i10 c0', 'default (vbd i5 c1)']
@@ -74,13 +67,13 @@ def errors_of(text, pos, exact):
     return field_error(strain, ref, mask), shape
 
 
-def exact_of(text, pos):
+def exact_of(text, pos, tol=1e-9):
     """The exact statics of the scene's cloth, from positions `pos` (the fixed vertices where
     the run left them; the strain field it converges to does not depend on the start)."""
     cloth = load(text)
     for i in range(len(pos)):
         cloth.pos[i] = pos[i]
-    x, info = statics(cloth)
+    x, info = statics(cloth, tol=tol)
     return x, info
 
 
