@@ -2,6 +2,7 @@
 
     python -m bench              the speed-against-error front (bench/front.py): front.md,
                                  .json, -field.svg, -shape.svg
+    python -m bench --sizes 30,60 the front at those sizes only
     python -m bench --quick      the same at 30x30 for a few configurations (a smoke test:
                                  its files are git-ignored)
     python -m bench --fabrics    every fabric on the three presets: the field against the exact
@@ -35,6 +36,8 @@ def main(argv=None):
     ap.add_argument('--fabrics', action='store_true', help='every fabric on the three presets')
     ap.add_argument('--releases', action='store_true', help='every preset pulled, let go, tapped')
     ap.add_argument('--figures', action='store_true', help='the README\'s other figures')
+    ap.add_argument('--sizes', default=None,
+                    help='the front\'s grid sizes, comma-separated (default: 30,60,120,200)')
     ap.add_argument('--out', default=os.path.join(ROOT, 'bench', 'results'),
                     help='folder for the results (default: bench/results)')
     args = ap.parse_args(argv)
@@ -83,7 +86,8 @@ def dispatch(args, page, progress, meta):
         return 'figures', figures.markdown(rows, meta), rows, []
     from bench import front
     meta['seconds'] = front.QUICK_SECONDS if args.quick else front.RUN_SECONDS
-    rows = front.run(page, args.quick, progress)
+    sizes = [int(v) for v in args.sizes.split(',')] if args.sizes else None
+    rows = front.run(page, args.quick, progress, sizes)
     extra = [('-field.svg', svg_front(rows, 'field', 'Strain-field error against ms per frame', front.DEFAULT)),
              ('-shape.svg', svg_front(rows, 'shape', 'Shape error (widths) against ms per frame', front.DEFAULT))]
     return 'front', front.markdown(rows, meta), rows, extra

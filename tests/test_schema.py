@@ -265,3 +265,12 @@ def test_the_keys_table_lists_every_declared_key_once():
     from cloth.fabrics import fabric, DEFAULT_FABRIC
     assert '| `stretch` | from 1 to 1000000 N/m (the stretch stiffness) | N/m | %s | yes |' % (
         fabric(DEFAULT_FABRIC)[2]) in out
+
+
+def test_the_readmes_fabric_table_is_the_cores():
+    """The README's table of fabrics lists cloth/fabrics.py's FABRICS, number for number."""
+    from pathlib import Path
+    from cloth.fabrics import FABRICS
+    text = (Path(__file__).resolve().parent.parent / 'README.md').read_text()
+    for f in FABRICS:
+        assert '| %s | %g | %g | %g | %s |' % (f[0], f[2], f[3], f[4], f[5]) in text, f[0]
