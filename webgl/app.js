@@ -54,6 +54,7 @@
     trail: false,       // the blade's trail is fading out: keep drawing it
     linkPending: false, // a link is being copied (the clipboard answers later)
     slowWork: 0,        // a frame's edge updates, where load() warned they are too many for real time
+    loadNote: '',       // what load() said of the scene it loaded ('' for nothing)
     relayouts: 0,       // how many times the views were laid out again (info(): the tests)
     replaying: false,   // a replay was playing when the last note about it was said
   };
@@ -185,18 +186,23 @@
     ui.setPreset(preset);
     showSettings();
     if (renderer.ok && !renderer.lost) render();
+    // What the page says of the new scene, all of it in one note (one said after another
+    // replaced it: a heavy scene of an older model said only that it was old).
+    const notes = [];
     const work = scenes.workOf(obj) * Math.max(1, state.compare.length);
     state.slowWork = work > scenes.REAL_TIME_WORK ? work : 0;
-    if (state.slowWork) ui.note(scenes.slowNote(state.slowWork));
+    if (state.slowWork) notes.push(scenes.slowNote(state.slowWork));
     // A scene made under an older model runs as a membrane: said, with what became of its keys.
     const legacy = core.notes(state.cloth).legacy;
-    if (legacy) ui.note('This scene was ' + legacy);
+    if (legacy) notes.push('This scene was ' + legacy);
     // A scene that starts its cloth inside an obstacle: pushed out at once, tangled.
     const inside = state.cloth.n_obstacles > 0 ? state.panels[0].run.ops.inside_obstacles() : 0;
     if (inside > 0) {
-      ui.note(inside + (inside === 1 ? ' vertex starts' : ' vertices start') + ' inside an obstacle: the first ' +
-              'step pushes them out, which tangles the cloth; move the obstacle or the cloth in the scene');
+      notes.push(inside + (inside === 1 ? ' vertex starts' : ' vertices start') + ' inside an obstacle: the first ' +
+                 'step pushes them out, which tangles the cloth; move the obstacle or the cloth in the scene');
     }
+    state.loadNote = notes.join('; ');
+    if (state.loadNote) ui.note(state.loadNote);
     state.replaying = sess.replay_end > 0;
     if (sess.replay_end === 0) { session.atReplayEnd(sess); setPaused(true); }
     else if (sess.replay_end > 0) setPaused(false);

@@ -30,7 +30,8 @@ window.clothParams = (function () {
     if (p.solver !== was.solver) keys.solver = p.solver;
     if (p.material !== was.material && own(scenes.MATERIALS, p.material)) {
       keys.stretch = scenes.MATERIALS[p.material].stretch;
-      keys.shear = scenes.MATERIALS[p.material].shear;
+      // (a scene of an older model keeps its own `shear`: scenes.ofModel)
+      if (scenes.ofModel(scene.model)) keys.shear = scenes.MATERIALS[p.material].shear;
       keys.density = scenes.MATERIALS[p.material].density;
     }
     return keys;

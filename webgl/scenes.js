@@ -122,11 +122,17 @@ window.clothScenes = (function () {
     obj.solver = p.solver;
     if (own(MATERIALS, p.material)) {
       obj.stretch = MATERIALS[p.material].stretch;
-      obj.shear = MATERIALS[p.material].shear;
+      if (ofModel(obj.model)) obj.shear = MATERIALS[p.material].shear;
       obj.density = MATERIALS[p.material].density;
     }
     return obj;
   }
+
+  // Whether a scene of model `model` (its `model` key) reads the fabric's shear stiffness. A
+  // scene made before the membrane (no `model`, or an older one) has a `shear` of its own, a
+  // boolean the membrane leaves out, and the core refuses a number there: its shear stiffness
+  // is the default fabric's, and the page writes only its stretch and density.
+  function ofModel(model) { return model === SCHEMA.model; }
 
   // The presets (cloth/presets.py, in menu order): name -> {label, params: {cols, rows}}.
   // Their scenes are the core's, a function of the grid (make).
@@ -265,5 +271,5 @@ window.clothScenes = (function () {
            PRESETS: PRESETS, LIMITS: LIMITS, SOLVERS: SOLVERS, MATERIALS: MATERIALS, materialOf: materialOf,
            PAGE_LIMITS: PAGE_LIMITS,
            REAL_TIME_WORK: REAL_TIME_WORK, slowNote: slowNote, defaults: defaults, make: make, viewFor: viewFor,
-           clamp: clamp, readNumber: readNumber, workOf: workOf, pageLimit: pageLimit };
+           clamp: clamp, readNumber: readNumber, workOf: workOf, pageLimit: pageLimit, ofModel: ofModel };
 })();

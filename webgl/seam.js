@@ -64,7 +64,8 @@ window.clothSeam = (function () {
       // Compare mode: an array of objects of scene keys, one per panel ([] leaves it).
       compare: function (list) { return app.setCompare(list); },
       // Per panel: {label, scene (the panel's full scene JSON text), positions, screen,
-      // rms_strain, max_strain, sim_ms}, and pinned, held, max_value, imbalance, max_stress.
+      // rms_strain, max_strain, sim_ms}, and pinned, held, max_value, high_value (the edges'
+      // value Auto scales the strain colours to), imbalance, max_stress.
       panels: function () {
         const state = app.state();
         return state.panels.map(function (p, i) {
@@ -74,7 +75,8 @@ window.clothSeam = (function () {
           if (state.compare.length) Object.assign(obj, state.compare[i]);
           return { label: app.runner.label(p.cloth), scene: JSON.stringify(obj), positions: st.positions,
                    screen: st.screen, rms_strain: p.cloth.rms_strain, max_strain: p.cloth.max_strain,
-                   sim_ms: p.simMs, pinned: st.pinned, held: st.held, hands: st.hands, max_value: p.cloth.max_value, imbalance: p.cloth.imbalance,
+                   sim_ms: p.simMs, pinned: st.pinned, held: st.held, hands: st.hands, max_value: p.cloth.max_value,
+                   high_value: p.cloth.high_value, imbalance: p.cloth.imbalance,
                    max_stress: p.cloth.max_stress };
         });
       },

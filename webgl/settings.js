@@ -111,7 +111,7 @@ window.clothSettings = (function () {
         return;
       }
       holds.forEach(function (h) { if (h.k < 0) dropped.push('the held vertex at ' + m.place(h.was)); });
-      const notes = [note, state.slowWork ? scenes.slowNote(state.slowWork) : '', window.clothGrid.droppedNote(dropped, p.cols, p.rows)];
+      const notes = [note, state.loadNote, window.clothGrid.droppedNote(dropped, p.cols, p.rows)];
       ui.note(notes.filter(function (t) { return !!t; }).join('; '));
     }
 

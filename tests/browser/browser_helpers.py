@@ -71,6 +71,25 @@ def steady_bytes_per_frame(cdp, advance, frames, name, limit, windows=4):
     return per_frame
 
 
+# Run n frames of the first panel's cloth one by one in the page and watch it: each frame's
+# fastest vertex (its move over the frame, per second) and the highest y any vertex reached.
+# In the page, so that a test of a 1200-vertex cloth does not fetch its state every frame.
+WATCH = '''(n) => { const c = clothApp.cloth(), pos = c.pos, fps = 1 / c.dt;
+    const out = {fastest: [], top: -Infinity};
+    const before = Float64Array.from(pos);
+    for (let f = 0; f < n; f++) {
+      clothApp.advance(1, true);
+      let most = 0;
+      for (let i = 0; i < c.n_verts; i++) {
+        most = Math.max(most, Math.hypot(pos[2 * i] - before[2 * i], pos[2 * i + 1] - before[2 * i + 1]) * fps);
+        out.top = Math.max(out.top, pos[2 * i + 1]);
+      }
+      out.fastest.push(most);
+      before.set(pos);
+    }
+    return out; }'''
+
+
 def load_paused(pg, text):
     """Load a scene and pause in one task: no animation frame runs between them (from two
     calls, a loaded machine ran frames in the gap, and a test's frame numbers drifted)."""

@@ -13,12 +13,14 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from browser_helpers import ARGS, DIST, ROOT, SYSTEM_CHROMIUM  # noqa: E402
+sys.path.insert(0, str(ROOT))
+from cloth.solvers import SOLVERS  # noqa: E402
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     ap.add_argument('--mode', default='strain', choices=['strain', 'stress'])
-    ap.add_argument('--solver', default='jakobsen', choices=['jakobsen', 'xpbd'])
+    ap.add_argument('--solver', default='jakobsen', choices=SOLVERS)
     ap.add_argument('--out', default=str(ROOT / 'docs' / 'screenshot.png'))
     ap.add_argument('--compare', action='store_true', help='seed vs default, side by side')
     args = ap.parse_args()

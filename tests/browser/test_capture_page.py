@@ -36,7 +36,7 @@ def saved(pg, click, note):
 
 
 def test_picture_is_the_stage_at_device_pixels(open_page):
-    pg = open_page('?paused=1&preset=peg')
+    pg = open_page('?paused=1&preset=towel')
     pg.js('clothApp.advance(90)')
     wait_settled(pg)
     # What the stage is as the picture is taken (paused: the picture draws this same frame).
@@ -49,7 +49,7 @@ def test_picture_is_the_stage_at_device_pixels(open_page):
     assert len(lit) > len(pts) // 3
     peg = pg.js('(p) => clothApp.clientOf(p[0], p[1])', pg.js('clothApp.obstacles()')[0]['at'])
     # (WebKit then shows its download bar, which shortens the window: the stage changes after.)
-    name, data = saved(pg, lambda: pg.locator('#btn-picture').click(), r'Picture saved as (cloth-peg-f\d+\.png)')
+    name, data = saved(pg, lambda: pg.locator('#btn-picture').click(), r'Picture saved as (cloth-towel-f\d+\.png)')
     width, height, bpp, rows = png_rgb(data)
     assert [width, height] == size[:2]
 
@@ -59,7 +59,7 @@ def test_picture_is_the_stage_at_device_pixels(open_page):
     same = sum(1 for i in lit if max(abs(a - b) for a, b in zip(at(pts[i]), drawn[i][:3])) <= 40)
     assert same >= 0.8 * len(lit), (same, len(lit))
     grey = at(peg)
-    assert min(grey) > 60 and max(grey) - min(grey) < 60, grey      # its grey fill, not the dark stage
+    assert min(grey) > 60 and max(grey) - min(grey) < 60, grey      # the peg's grey fill, not the dark stage
 
 
 def test_video_records_the_stage_or_says_why_not(open_page):

@@ -1,7 +1,10 @@
 """Pointer input in a real browser: mouse, right-click pins, touch, devicePixelRatio 2."""
+import math
 import time
 
 from browser_helpers import free_vertex, near
+
+from cloth.presets import PRESETS
 
 COLS, ROWS = 40, 30      # the default preset (curtain)
 TOL = 0.01               # CSS pixels: the held vertex sits exactly under the pointer
@@ -53,9 +56,10 @@ def test_mouse_drag_holds_vertex_under_cursor_then_releases(open_page):
 
 
 def test_a_hand_takes_its_vertex_to_the_pointer_within_reach_and_not_beyond(open_page):
-    # A drag is a hand of finite strength (cloth/sim.py HAND_FORCE): held still within the
+    # A drag is a hand of finite strength (cloth/hands.py HAND_FORCE): held still within the
     # cloth's reach the vertex comes to rest under the pointer; pulled down past where the
-    # hanging cloth can reach, it stops short of the pointer instead of stretching the cloth.
+    # hanging cloth can reach, it stops short of the pointer: the fabric stretches only as far
+    # as the hand's force takes it.
     pg = open_page()
     settle(pg)
     pg.js('clothApp.setPaused(true)')
@@ -72,12 +76,18 @@ def test_a_hand_takes_its_vertex_to_the_pointer_within_reach_and_not_beyond(open
     assert near(st['hands'][k], (x + 60, y - 40), TOL)
     assert near(st['screen'][k], (x + 60, y - 40), 1.0), (st['screen'][k], (x + 60, y - 40))
     pg.mouse.up()
-    # Beyond reach, on a cloth that does not stretch (the Material menu): the bottom of a
-    # curtain hung from a rod is as far from the rod as it can be.
-    pg.select_option('#material', 'inextensible')
+    # Beyond reach, on the stiffest fabric of the Material menu (denim): the bottom of a
+    # curtain hung from a rod is as far from the rod as the fabric lets it be, and a hand of at
+    # most HAND_FORCE stretches it by centimetres, not to the pointer 1.2 m below (measured:
+    # 3.4 cm from a curtain hung in denim from the start, 5-14 cm after a drag and the change
+    # of fabric, each a balance of the same strain field: a tension-only cloth's slack parts
+    # can rest in more than one place), its strain 3.5% at most.
+    pg.select_option('#material', 'denim')
     pg.js('clothApp.advance(240)')
     st = pg.state()
     x, y = st['screen'][k]
+    before = st['positions'][k]
+    per_metre = math.dist(st['screen'][k], st['screen'][0]) / math.dist(before, st['positions'][0])
     pg.mouse.move(x, y)
     pg.mouse.down()
     for i in range(1, 11):
@@ -86,8 +96,9 @@ def test_a_hand_takes_its_vertex_to_the_pointer_within_reach_and_not_beyond(open
     pg.js('clothApp.advance(60)')
     st = pg.state()
     assert near(st['hands'][k], (x, y + 300), TOL)
-    assert abs(st['screen'][k][1] - y) < 3, (st['screen'][k], (x, y))
-    assert pg.js('() => { const c = clothApp.cloth(); c.measure(); return c.max_strain; }') < 0.05
+    drop = before[1] - st['positions'][k][1]
+    assert 0 < drop < 0.25 * 300 / per_metre, (drop, 300 / per_metre)
+    assert pg.js('clothApp.cloth().max_strain') < 0.05          # measured every frame the page runs
     pg.mouse.up()
 
 
@@ -114,9 +125,12 @@ def test_right_click_pins_and_the_vertex_holds_still(open_page):
 
 
 def test_pinned_vertex_dragged_elsewhere_stays_there(open_page):
-    pg = open_page()
+    # A hand on a pin moves it with the hand's finite force and leaves it fixed where it lets
+    # go (cloth/hands.py). The Chain's clamp holds nothing but the chain: it goes where the
+    # pointer takes it (its spring holds it within the chain's weight / HAND_STIFFNESS, 0.03 mm).
+    pg = open_page('?preset=chain')
     st = pg.state()
-    k = 0  # top-left corner, pinned in the curtain
+    k = 0  # the clamp
     assert st['pinned'][k]
     x, y = st['screen'][k]
     target = (x + 120, y + 90)
@@ -124,7 +138,22 @@ def test_pinned_vertex_dragged_elsewhere_stays_there(open_page):
     pg.js('clothApp.advance(120)')
     st = pg.state()
     assert st['pinned'][k] and not st['held'][k]
-    assert near(st['screen'][k], target, TOL)
+    assert near(st['screen'][k], target, 0.1), (st['screen'][k], target)
+    # The curtain's corner is held by the rod beside it: the hand's force takes it only part
+    # of the way; let go, it stays exactly where the hand left it.
+    pg.js("clothApp.usePreset('curtain')")
+    st = pg.state()
+    x, y = st['screen'][k]
+    target = (x + 120, y + 90)
+    drag_and_check(pg, k, [target])
+    left = pg.state()['positions'][k]
+    pg.js('clothApp.advance(120)')
+    st = pg.state()
+    assert st['pinned'][k] and not st['held'][k] and st['positions'][k] == left
+    sx, sy = st['screen'][k]
+    # it moved toward the pointer, along the drag
+    along = ((sx - x) * 120 + (sy - y) * 90) / 150
+    assert 10 < along < 150, (along, (sx, sy), (x, y))
 
 
 def touch(cdp, kind, points, timestamp=None):
@@ -206,7 +235,7 @@ def test_keyboard_shortcuts(open_page):
     assert pg.info()['mode'] == 'stress'
     pg.keyboard.press('a')
     assert pg.info()['scaleMode'] == 'fixed'
-    pg.keyboard.press('3')
+    pg.keyboard.press(str([p[0] for p in PRESETS].index('chain') + 1))      # the presets' keys, in order
     assert pg.info()['preset'] == 'chain'
     pg.keyboard.press('r')
     assert pg.info()['frames'] == 0

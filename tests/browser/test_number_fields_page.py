@@ -10,6 +10,8 @@ import pytest
 
 from browser_helpers import near  # noqa: F401  (the helpers' import sets the path)
 
+from cloth.keys import spec
+
 REFUSED = ['0x10', '1_000', '1e-400', '5,500', 'Infinity', '5 5', '--5', '1e5e5', '.', '+', '½', '٣']
 
 
@@ -68,11 +70,12 @@ def test_arrow_keys_step_a_field_within_its_range(open_page):
     pg.locator('#gravity').press('ArrowUp')
     pg.locator('#gravity').press('ArrowUp')
     assert pg.info()['params']['gravity'] == 10 and pg.input_value('#gravity') == '10'
-    type_into(pg, '#substeps', '16')
-    pg.locator('#substeps').press('ArrowUp')
-    assert pg.info()['params']['substeps'] == 16
-    pg.locator('#substeps').press('ArrowDown')
-    assert pg.info()['params']['substeps'] == 15
+    top = spec('iterations').field_hi                     # at its end, it stays there
+    type_into(pg, '#iterations', str(top))
+    pg.locator('#iterations').press('ArrowUp')
+    assert pg.info()['params']['iterations'] == top
+    pg.locator('#iterations').press('ArrowDown')
+    assert pg.info()['params']['iterations'] == top - spec('iterations').step
 
 
 def test_an_arrow_key_in_an_empty_field_steps_from_what_it_stands_for(open_page):
@@ -89,13 +92,16 @@ def test_an_arrow_key_in_an_empty_field_steps_from_what_it_stands_for(open_page)
     assert pg.info()['params']['tear'] == 0
     pg.locator('#tear').press('ArrowUp')
     assert pg.info()['params']['tear'] == 0.01
-    # The compare editor's empty field is the panel's running value: panel 2 (the default
-    # solver) runs 8 substeps without naming them.
+    # The compare editor's empty field is the panel's running value: panel 2 runs the scene's
+    # substeps without naming them.
     pg.js("clothApp.compare([{solver: 'jakobsen'}, {solver: 'xpbd'}])")
     sel = '#compare-list input[data-key=substeps] >> nth=1'
     assert pg.input_value(sel) == ''
+    running = pg.js('clothApp.cloth().scene.substeps')         # the scene's, as panel 1 runs them too
+    assert running == json.loads(pg.info()['scene'])['substeps']
     pg.locator(sel).press('ArrowUp')
-    assert json.loads(pg.js('clothApp.panels()')[1]['scene'])['substeps'] == 9
+    assert json.loads(pg.js('clothApp.panels()')[1]['scene'])['substeps'] == running + 1
+    assert pg.js('clothApp.panels()[1].label').startswith('xpbd S%d x ' % (running + 1))
 
 
 def test_the_compare_editor_reads_numbers_the_same_way(open_page):

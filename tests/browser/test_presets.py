@@ -1,8 +1,13 @@
 """Presets model air and the two-corner preset hangs slack; a scene's scripted actions play in
 the page at their frames, as the CLI plays them."""
 import json
+import math
+
+from browser_helpers import WATCH
 
 from cloth.api import run
+from cloth.hands import HAND_STIFFNESS
+from cloth.presets import CORNER_SPAN
 
 README_EXAMPLE = {"cols": 20, "rows": 15, "spacing": 0.05, "pins": [0, 5, 10, 14, 19],
                   "damping": 0.5,
@@ -30,16 +35,14 @@ def test_presets_damp_like_air_and_two_corners_hangs_slack(open_page):
     cols = scene['cols']
     width = (cols - 1) * scene['spacing']
     # the corner is carried in over a second, gently: nothing flung, nothing over the pins
-    fastest, highest = 0.0, -1.0
-    last = pg.state()['positions']
-    for _ in range(120):
-        pg.js('clothApp.advance(1)')
-        pos = pg.state()['positions']
-        fastest = max(fastest, max(((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5 * 60
-                                   for a, b in zip(pos, last)))
-        highest = max(highest, max(p[1] for p in pos))
-        last = pos
-    assert abs(pos[cols - 1][0] - 0.8 * width) < 1e-12 and pos[cols - 1][1] == 0
+    seen = pg.js(WATCH, 120)
+    fastest, highest = max(seen['fastest']), seen['top']
+    pos = pg.state()['positions']
+    # A hand carries the clamp (cloth/presets.py CORNER_SPAN) and leaves it pinned: its spring
+    # held it within the load it carries (half the cloth's weight) over its stiffness of its
+    # aim, 0.7 mm (cloth/hands.py HAND_STIFFNESS)
+    off = 0.5 * scene['density'] * width * width * 9.81 / HAND_STIFFNESS
+    assert math.dist(pos[cols - 1], (CORNER_SPAN * width, 0)) < 1.5 * off, (pos[cols - 1], off)
     assert pg.state()['pinned'][cols - 1]
     assert fastest < 3.0 and highest < 0.01 * width, (fastest, highest)
     pg.js('clothApp.advance(480)')

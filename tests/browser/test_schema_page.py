@@ -1,19 +1,22 @@
-"""The page takes every scene key from the core's one declaration (cloth/scene.py KEYS, issue
+"""The page takes every scene key from the core's one declaration (cloth/keys.py KEYS, issue
 #23): the panel's fields (caption, range, step), the compare editor's fields, each solver's
-starting substeps and iterations, the action ops and limits and the page's grid limit. Held
-against the CPython declarations, so that neither side can drift. CPython's own side:
+starting substeps and iterations (cloth/solvers.py), the fabrics (cloth/fabrics.py), the
+presets (cloth/presets.py), the action ops and limits and the page's grid limit. Held against
+the CPython declarations, so that neither side can drift. CPython's own side:
 tests/test_schema.py."""
 import json
 
 from browser_helpers import near  # noqa: F401  (the helpers' import sets the path)
 
-from cloth.scene import KEYS, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, COMPARE_KEYS, SOLVERS, \
-    solver_defaults
-from cloth.sim import count_edges
-
-from cloth.scene import SCENE_FIELDS
+from cloth.keys import KEYS, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, COMPARE_KEYS, MODEL, \
+    SCENE_FIELDS
+from cloth.solvers import SOLVERS, SOLVER_BUDGETS, SOLVER_LABELS, DEFAULT_SOLVER
+from cloth.fabrics import FABRICS, DEFAULT_FABRIC
+from cloth.presets import PRESETS
+from cloth.topology import count_edges
 
 PANEL_FIELDS = [f[0] for f in SCENE_FIELDS]
+GRIDS = [[1, 1], [7, 5], [200, 3], [1, 40]]
 
 
 def caption(k):
@@ -26,10 +29,10 @@ def test_the_page_reads_the_cores_declarations(open_page):
       const s = clothCore.schema(), L = clothScenes.LIMITS;
       return {order: s.order, keys: s.keys, limits: L, ops: s.ops, maxActions: s.maxActions,
               maxPanels: s.maxPanels, maxVertices: s.maxVertices, solvers: clothScenes.SOLVERS,
-              pageVertices: clothScenes.PAGE_LIMITS.vertices,
-              edges: [[1, 1, false], [7, 5, false], [7, 5, true], [200, 3, true]].map(
-                (a) => clothCore.edgesOf(a[0], a[1], a[2]))};
-    })()''')
+              pageVertices: clothScenes.PAGE_LIMITS.vertices, model: s.model,
+              fabrics: clothCore.fabrics(), materials: clothScenes.MATERIALS,
+              edges: %s.map((a) => clothCore.edgesOf(a[0], a[1]))};
+    })()''' % json.dumps(GRIDS))
     assert got['order'] == [k.key for k in KEYS]
     assert got['ops'] == OPS and got['maxActions'] == MAX_ACTIONS
     assert got['maxPanels'] == MAX_PANELS and got['maxVertices'] == MAX_VERTICES
@@ -43,16 +46,20 @@ def test_the_page_reads_the_cores_declarations(open_page):
                 (k.field_lo, k.field_hi, k.step, k.label, k.kind == 'int'), k.key
         else:
             assert k.key not in got['limits'], k.key
-    assert got['limits']['tear']['off'] and got['limits']['density']['off']
-    assert not got['limits']['damping']['off']
+    # Only tearing's 0 means none (an empty field, `off`); a cloth always has a density.
+    assert got['limits']['tear']['off']
+    assert not got['limits']['density']['off'] and not got['limits']['damping']['off']
     for i, name in enumerate(SOLVERS):
-        d = solver_defaults(name)
-        assert (got['solvers'][name]['substeps'], got['solvers'][name]['iterations']) == \
-            (d['substeps'], d['iterations'])
+        assert (got['solvers'][name]['label'], got['solvers'][name]['substeps'],
+                got['solvers'][name]['iterations']) == (SOLVER_LABELS[i],) + tuple(SOLVER_BUDGETS[i][:2])
     k = {k.key: k for k in KEYS}
     assert got['pageVertices'] == k['cols'].field_hi * k['rows'].field_hi
-    assert got['edges'] == [count_edges(1, 1, False), count_edges(7, 5, False),
-                            count_edges(7, 5, True), count_edges(200, 3, True)]
+    assert got['edges'] == [count_edges(c, r) for c, r in GRIDS]
+    assert got['model'] == MODEL
+    # The fabrics: the core's list, read once, and the page's Material menu made of it.
+    assert got['fabrics'] == {'list': FABRICS, 'preset': DEFAULT_FABRIC}
+    assert {n: [m['label'], m['stretch'], m['shear'], m['density']] for n, m in got['materials'].items()} == \
+        {f[0]: f[1:5] for f in FABRICS}
 
 
 def test_the_panels_fields_are_captioned_and_bounded_by_their_keys(open_page):
@@ -69,12 +76,13 @@ def test_the_panels_fields_are_captioned_and_bounded_by_their_keys(open_page):
         assert text == caption(k[key]), key
         title = pg.js('(id) => document.getElementById(id).title', key)
         assert title == '%s: %s to %s' % (k[key].label, fmt(k[key].field_lo), fmt(k[key].field_hi)), key
-    # Typing past a field's end clamps to the declared end, and says so.
+    # Typing past a field's end clamps to the declared end, and says so (Iterations: whose end
+    # the page still runs on the curtain).
     pg.js('clothApp.setPaused(true)')
-    pg.fill('#substeps', '1e9')
-    pg.press('#substeps', 'Enter')
-    assert pg.js('clothApp.info().params.substeps') == k['substeps'].field_hi
-    assert 'Substeps clamped to its maximum %d' % k['substeps'].field_hi in pg.info()['note']
+    pg.fill('#iterations', '1e9')
+    pg.press('#iterations', 'Enter')
+    assert pg.js('clothApp.info().params.iterations') == k['iterations'].field_hi
+    assert 'Iterations clamped to its maximum %d' % k['iterations'].field_hi in pg.info()['note']
     # Each field is read from and written to its key: typed in, it is what the cloth runs
     # (a point key's field is its y component; a grid key makes a new grid).
     typed = {'iterations': '3', 'substeps': '5', 'gravity': '-4.5', 'damping': '0.5', 'tear': '0.7',
@@ -103,24 +111,27 @@ def test_the_compare_editor_offers_exactly_the_keys_a_panel_may_have(open_page):
     assert len(shown) == 2
     for keys in shown:
         assert sorted(keys) == sorted(COMPARE_KEYS)
-    # Every field it offers makes a scene the core takes: a panel with Tear and Density off
-    # (null: none) runs, and its scene says so.
+    # Every field it offers makes a scene the core takes: a panel with Tear off (null: none)
+    # and a fabric of its own runs, and its scene says so.
     pg.js('clothApp.setPaused(true)')
     pg.locator('#compare-list summary >> nth=1').click()     # panel 2's "more"
-    for key in ('tear', 'density'):
+    for key, text, value in [('tear', 'off', None), ('stretch', '5000', 5000), ('shear', '0', 0),
+                             ('density', '0.4', 0.4), ('corrections', '3', 3)]:
         sel = '#compare-list input[data-key=%s] >> nth=1' % key
-        pg.fill(sel, 'off')
+        pg.fill(sel, text)
         pg.press(sel, 'Enter')
         scene = json.loads(pg.js('clothApp.panels()')[1]['scene'])
-        assert key in scene and scene[key] is None, (key, scene.get(key))
+        assert key in scene and scene[key] == value, (key, scene.get(key))
+        assert pg.info()['error'] == '', pg.info()['error']
+    # and what panel 2 runs is that fabric
+    assert '5000/0 N/m 0.4 kg/m\u00b2' in pg.js('clothApp.panels()[1].label')
     pg.js('clothApp.advance(5)')
     assert pg.js('clothApp.info().frames') >= 5
 
 
 def test_the_menus_are_the_declared_solvers_and_presets(open_page):
-    """The Solver menu is cloth/scene.py SOLVERS with their SOLVER_LABELS, and the Preset menu
-    and the number keys are webgl/scenes.js PRESETS in order: neither is written in the HTML."""
-    from cloth.scene import SOLVER_LABELS, DEFAULT_SOLVER
+    """The Solver menu is cloth/solvers.py SOLVERS with their SOLVER_LABELS, and the Preset menu
+    and the number keys are cloth/presets.py PRESETS in order: neither is written in the HTML."""
     pg = open_page()
     got = pg.js('''(() => ({
       solver: [...document.querySelectorAll('#solver option')].map((o) => [o.value, o.textContent, o.title]),
@@ -132,6 +143,7 @@ def test_the_menus_are_the_declared_solvers_and_presets(open_page):
         assert text == label and (title.startswith('The default') == (value == DEFAULT_SOLVER)), title
     assert [[n, label, False] for n, label in got['presets']] + [['custom', 'Custom (JSON)', True]] == \
         got['preset']
+    assert got['presets'] == [[p[0], p[1]] for p in PRESETS]
     # Each number key picks its preset; the menu shows it.
     pg.js('clothApp.setPaused(true)')
     for i, (name, _label) in enumerate(got['presets']):
@@ -139,5 +151,6 @@ def test_the_menus_are_the_declared_solvers_and_presets(open_page):
         assert pg.info()['preset'] == name and pg.input_value('#preset') == name
     # A scene that says its solver shows it in the menu, by the declared name.
     for name in SOLVERS:
-        pg.js('(n) => clothApp.loadScene({cols: 3, rows: 3, spacing: 0.1, pins: [0], solver: n})', name)
+        pg.js('([n, m]) => clothApp.loadScene({model: m, cols: 3, rows: 3, spacing: 0.1, pins: [0], solver: n})',
+              [name, MODEL])
         assert pg.input_value('#solver') == name

@@ -12,6 +12,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from conftest import DIST
+from cloth.keys import MODEL
 from browser_helpers import GARBAGE_TOO, bytes_under, steady_bytes_per_frame
 
 SOAK_FRAMES = int(os.environ.get('CLOTH_SOAK_FRAMES', '10000'))
@@ -94,20 +95,20 @@ def test_hot_path_allocates_nothing_per_frame(app):
 
 
 def test_a_moving_cloth_allocates_nothing_per_frame(app):
-    """The solver's whole path (tethers, cells, sweeps, line solves, the tear check) on a cloth
-    that never rests (no damping, no sleep, swinging after a throw), garbage included
-    (`steady_bytes_per_frame`): the test above times a curtain that falls asleep and so steps
-    nothing. A double passed to a kernel that is not inlined was a fresh heap number per call
-    (about 50 bytes a frame through the line solves) until the kernels read their constants
-    from a typed array (solve.K_*)."""
+    """The default solver's whole path (the sweeps, the coarse-grid correction and its line
+    search, the hands' springs, the tear check) on a cloth that never rests (no damping, no
+    sleep, swinging after a throw), garbage included (`steady_bytes_per_frame`): the test above
+    times a curtain that falls asleep and so steps nothing. (In model 1's solver a double
+    passed to a kernel that was not inlined was a fresh heap number per call, about 50 bytes a
+    frame.)"""
     page, cdp, _ = app
     page.evaluate('''() => {
         const pins = []; for (let c = 0; c < 40; c += 3) pins.push(c); pins.push(39);
-        clothApp.loadScene(JSON.stringify({cols: 40, rows: 30, spacing: 0.1, damping: 0, sleep: false,
+        clothApp.loadScene(JSON.stringify({model: %d, cols: 40, rows: 30, spacing: 0.1, damping: 0, sleep: false,
                                            pins: pins, tear: 10}));
         const ops = clothCore.ops(clothApp.cloth());
         ops.grab(1170, 1.5, -1.5); ops.release(1170);
-        clothApp.advance(3000); }''')
+        clothApp.advance(3000); }''' % MODEL)
     per_frame = steady_bytes_per_frame(cdp, lambda n: page.evaluate('(n) => clothApp.advance(n)', n),
                                        2000, 'advance', 2)
     assert not page.evaluate('clothApp.cloth().asleep')

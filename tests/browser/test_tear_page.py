@@ -11,7 +11,10 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 
 from browser_helpers import ROOT, load_paused, steady_bytes_per_frame
 
-SMALL = {'cols': 14, 'rows': 10, 'spacing': 0.1, 'pins': [0, 4, 9, 13], 'damping': 1}
+from cloth.keys import MODEL
+from cloth.presets import PRESETS, TEARABLE_STRAIN
+
+SMALL = {'model': MODEL, 'cols': 14, 'rows': 10, 'spacing': 0.1, 'pins': [0, 4, 9, 13], 'damping': 1}
 
 
 def cli_positions(text):
@@ -56,7 +59,9 @@ def test_alt_drag_cuts_what_it_crosses_records_cuts_and_replays(open_page):
     x0, x1 = pg.state()['screen'][4 * 14][0] - 30, pg.state()['screen'][4 * 14 + 13][0] + 30
     stroke(pg, [(x0 + (x1 - x0) * i / 6, y) for i in range(7)])
     info = pg.info()
-    assert info['edges'] == edges - 14 and info['broken'] == 14
+    # every edge between the rows: the 14 structural ones and both diagonals of the 13 cells
+    crossed = 14 + 2 * 13
+    assert info['edges'] == edges - crossed and info['broken'] == crossed
     rec = json.loads(pg.js('clothApp.recording()'))
     cuts = [a for a in rec['actions'] if a['op'] == 'cut']
     assert len(cuts) == 6 and all(len(a['from']) == 2 and len(a['to']) == 2 for a in cuts)
@@ -158,9 +163,9 @@ def test_tearing_past_the_limit_and_the_tear_field(open_page):
 
 def test_the_tearable_preset_invites_it(open_page):
     pg = open_page()
-    pg.keyboard.press('5')
+    pg.keyboard.press(str([p[0] for p in PRESETS].index('tearable') + 1))     # its number key
     info = pg.info()
-    assert info['preset'] == 'tearable' and info['params']['tear'] > 0
+    assert info['preset'] == 'tearable' and info['params']['tear'] == TEARABLE_STRAIN
     assert json.loads(info['scene'])['tear'] == info['params']['tear']
     pg.js('clothApp.setPaused(true)')
     pg.js('clothApp.advance(240)')
@@ -170,19 +175,21 @@ def test_the_tearable_preset_invites_it(open_page):
 def test_a_200x200_cloth_cut_into_strips(open_page):
     pg = open_page()
     pg.js('(t) => clothApp.loadScene(t)', json.dumps(
-        {'cols': 200, 'rows': 200, 'spacing': 0.01, 'pins': list(range(0, 200, 10)), 'substeps': 2}))
+        {'model': MODEL, 'cols': 200, 'rows': 200, 'spacing': 0.01, 'pins': list(range(0, 200, 10))}))
     pg.js('clothApp.setPaused(true)')
     pg.js('clothApp.advance(5)')
     # (the few screen points in the page: state() of 40,000 vertices takes seconds to send)
+    # (two strokes: each pointer event that cuts is drawn, and SwiftShader draws the 80,000
+    # lines of this grid in about a second)
     st = pg.js('''() => { const s = clothApp.state().screen;
-        return [s[0], s[199 * 200], s[39], s[40], s[79], s[80], s[119], s[120], s[159], s[160]]; }''')
+        return [s[0], s[199 * 200], s[66], s[67], s[133], s[134]]; }''')
     top, bottom = st[0][1] - 10, st[1][1] + 10
-    for j in range(4):
+    for j in range(2):
         x = (st[2 + 2 * j][0] + st[3 + 2 * j][0]) / 2
         stroke(pg, [(x, top + (bottom - top) * i / 4) for i in range(5)])
         pg.js('clothApp.advance(2)')
     info = pg.info()
-    assert info['broken'] >= 4 * 199 and info['error'] == ''
+    assert info['broken'] >= 2 * 199 and info['error'] == ''
     pg.js('clothApp.advance(30)')
     assert pg.js('clothApp.state().positions.every(p => Number.isFinite(p[0]) && Number.isFinite(p[1]))')
 

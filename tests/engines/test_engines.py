@@ -12,6 +12,7 @@ pen's press arrives, its later moves and release do not), touch in WebKit (its d
 pointerType "touch" actions as mouse events). Dispatched events are untrusted, so the page's
 setPointerCapture throws and is skipped (input.js); everything after the event is the same code.
 """
+import functools
 import json
 import sys
 
@@ -24,10 +25,12 @@ import test_render
 import test_obstacles_page as obstacles_page
 import test_capture_page as capture_page
 from test_parity import SCENES, grid
+from test_compare_page import PAIR
 
 sys.path.insert(0, str(ROOT))
 from cloth import api  # noqa: E402
 from cloth.scene import SceneError  # noqa: E402
+from cloth.keys import MODEL  # noqa: E402
 sys.path.pop(0)
 
 COLS, ROWS = 40, 30      # the default preset (curtain)
@@ -108,24 +111,39 @@ BAD = test_page.MALFORMED + ['{"cols": 2, "rows": 2, "spacing": 1, "a\\nb": 1}',
                              '{"cols": 2, "rows": 2, "spacing": 1, "\\ud800\\ud83d\\ude00": 1}']
 
 
-def test_core_run_is_the_cli_character_for_character(open_page):
-    cases = [(json.dumps(scene), frames) for _, (scene, frames) in sorted(SCENES.items())]
+# The parity scenes (tests/browser/test_parity.py) but the presets' and fabrics' variants,
+# which Chromium runs: every solver, feature, action and both models, in each engine's JS.
+ENGINE_SCENES = sorted(name for name in SCENES if not name.startswith(('preset-', 'fabric-'))) + \
+    ['preset-corners-jakobsen', 'preset-towel-vbd', 'preset-flag-xpbd', 'fabric-denim']
+
+
+@functools.lru_cache(maxsize=None)
+def cli_cases():
+    """[(scene text, frames, what the CLI gives: {'ok': text} or {'error': message})], made once
+    for both engines."""
+    cases = [(json.dumps(SCENES[name][0]), SCENES[name][1]) for name in ENGINE_SCENES]
     cases.append((json.dumps(grid(40, 30, pins=[0, 13, 26, 39])), 20))
     cases += [(text, 1) for text in BAD]
-    expected = []
+    out = []
     for text, frames in cases:
         try:
-            expected.append({'ok': api.run(text, frames)})
+            out.append((text, frames, {'ok': api.run(text, frames)}))
         except SceneError as e:
-            expected.append({'error': str(e)})
+            out.append((text, frames, {'error': str(e)}))
+    return out
+
+
+def test_core_run_is_the_cli_character_for_character(open_page):
+    cases = cli_cases()
     pg = open_page('?paused=1')
     got = pg.js('''(cases) => cases.map(([t, f]) => {
         try { return {ok: clothCore.run(t, f)}; }
-        catch (e) { return {error: e instanceof Error ? e.message : 'not an Error: ' + String(e)}; } })''', cases)
-    names = sorted(SCENES) + ['grid-40x30'] + BAD
-    for name, want, have in zip(names, expected, got):
+        catch (e) { return {error: e instanceof Error ? e.message : 'not an Error: ' + String(e)}; } })''',
+                [[text, frames] for text, frames, _ in cases])
+    names = ENGINE_SCENES + ['grid-40x30'] + BAD
+    for name, (_, _, want), have in zip(names, cases, got):
         assert have == want, name
-    assert sum('ok' in e for e in expected) == len(SCENES) + 1
+    assert sum('ok' in want for _, _, want in cases) == len(ENGINE_SCENES) + 1
 
 
 def test_bad_scenes_give_the_cli_message_in_the_page(open_page):
@@ -513,13 +531,10 @@ def test_open_a_file_by_the_picker_and_by_a_drop(open_page, tmp_path):
 
 # ---- compare mode (#14) and the blade (#15) ----------------------------------------------------
 
-PAIR = [{'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}, {'solver': 'xpbd', 'substeps': 8, 'iterations': 1}]
-
-
 def test_compare_mode(open_page):
-    """A real mouse drag in panel 2 holds the hand under the pointer there, and panel 1's hand
-    moves by the same displacement (the seed's method puts the vertex at it); the recording
-    replays each panel in the CLI."""
+    """The Seed vs default pair: a real mouse drag in panel 2 holds the hand under the pointer
+    there, and panel 1's hand moves by the same displacement (the seed's method puts the vertex
+    at it); the recording replays each panel in the CLI."""
     pg = open_page('?paused=1')
     assert pg.js('(l) => clothApp.compare(l)', PAIR)
     pg.js('clothApp.advance(30)')
@@ -550,7 +565,7 @@ def test_the_blade_cuts(open_page):
     code with the tool off; WebDriver's modifier keys are not needed for it)."""
     pg = open_page('?paused=1')
     pg.js('(t) => clothApp.loadScene(t)', json.dumps(
-        {'cols': 14, 'rows': 10, 'spacing': 0.1, 'pins': [0, 4, 9, 13], 'damping': 1}))
+        {'model': MODEL, 'cols': 14, 'rows': 10, 'spacing': 0.1, 'pins': [0, 4, 9, 13], 'damping': 1}))
     pg.js('clothApp.setPaused(true)')
     pg.js('clothApp.advance(30)')
     pg.key('x')
@@ -562,7 +577,8 @@ def test_the_blade_cuts(open_page):
     pg.mouse.down()
     pg.mouse.move(x1, y, steps=6)
     pg.mouse.up()
-    assert pg.info()['broken'] == 14 and not any(pg.state()['held'])
+    # every edge between rows 4 and 5: 14 structural ones and both diagonals of 13 cells
+    assert pg.info()['broken'] == 14 + 2 * 13 and not any(pg.state()['held'])
     pg.js('clothApp.advance(20)')
     text = pg.js('clothApp.recording()')
     assert [a['op'] for a in json.loads(text)['actions']].count('cut') >= 1
