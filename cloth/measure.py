@@ -152,7 +152,8 @@ def high_value(cloth):
         v = value[e]
         b = 0
         if v > 0.0:
-            b = 1 + int(math.floor((math.log(v) * scale) - LOWEST_DECADE * BINS_PER_DECADE))
+            # math.floor, not int(): Transcrypt makes int() a parseFloat, a string a call.
+            b = 1 + math.floor((math.log(v) * scale) - LOWEST_DECADE * BINS_PER_DECADE)
             if b < 1:
                 b = 1
             if b >= bins:
