@@ -29,7 +29,7 @@
   const MAX_CATCHUP = 4;       // core frames per animation frame at most
   const FRAME_BUDGET_MS = 12;  // simulation time per animation frame at most (one frame always runs)
   const READOUT_MS = 250;      // readout refresh period
-  const EMA = 0.1;             // smoothing of the timing readouts
+  const EMA = 0.1;             // smoothing of the sim readout
 
   const core = window.clothCore, scenes = window.clothScenes, runner = window.clothRunner;
   const params = window.clothParams, stage = window.clothStage;
@@ -47,7 +47,8 @@
     preset: null, params: null, compare: [],
     mode: 'strain', scaleMode: 'auto', fullScale: 0.05, charts: true,
     paused: false, acc: 0, last: -1, renders: 0, dirty: true, needMeasure: true,
-    renderMs: NaN, fps: NaN, lastReadout: 0, scale: 0,
+    renderMs: NaN, fps: NaN, fpsAt: NaN, lastReadout: 0, scale: 0,
+    timeDraw: true,     // the next drawing is timed to completion (once a readout period)
     wanted: 0, played: 0, speed: 1,   // seconds of wall clock and of simulation since the last readout
     pinEdits: {},       // vertex -> pinned: the pins a person set (true) or removed (false)
     rects: [],          // the panels' rectangles in the canvas, CSS px
@@ -419,6 +420,7 @@
     overlays.fade(gestures.count() > 0 && renderer.ok, heldPoints);
     if (state.needMeasure) { state.panels.forEach(function (p) { p.run.ops.measure(); }); state.needMeasure = false; }
     const t0 = performance.now();
+    const timed = state.timeDraw;
     state.scale = window.clothReadouts.scaleOf(state.panels, state.mode, state.scaleMode, state.fullScale);
     renderer.begin();
     for (let i = 0; i < state.panels.length; i++) {
@@ -427,8 +429,13 @@
     }
     obstacles.draw(state.panels, state.rects, gestures.moving());
     capture.drawn();
-    const ms = performance.now() - t0;
-    state.renderMs = Number.isFinite(state.renderMs) ? state.renderMs + EMA * (ms - state.renderMs) : ms;
+    // The render readout: one drawing a readout period, timed until the GPU has finished it
+    // (one wait every READOUT_MS, not one a frame: a wait a frame would stall the pipeline).
+    if (timed) {
+      renderer.finish();
+      state.renderMs = performance.now() - t0;
+      state.timeDraw = false;
+    }
     state.dirty = false;
     state.renders++;
   }
@@ -450,9 +457,13 @@
   }
 
   const numbers = window.clothReadouts.create(ui, compareUI, runner);
+  const frameTimes = window.clothReadouts.frameClock();
   function readouts(now) {
     if (now - state.lastReadout < READOUT_MS || !state.cloth) return;
     state.lastReadout = now;
+    state.timeDraw = true;
+    state.fps = frameTimes.rate();
+    state.fpsAt = state.last;
     overlays.measure();
     if (state.wanted > 0) state.speed = state.played / state.wanted;
     state.wanted = 0; state.played = 0;
@@ -474,7 +485,7 @@
     const now = nowMs / 1000;
     let gap = state.last < 0 ? 0 : now - state.last;
     state.last = now;
-    if (gap > 0) state.fps = Number.isFinite(state.fps) ? state.fps + EMA * (1 / gap - state.fps) : 1 / gap;
+    frameTimes.push(now);
     if (gap > MAX_GAP) gap = MAX_GAP;
     try {
       if (!state.paused && state.cloth) {

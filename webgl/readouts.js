@@ -50,6 +50,36 @@ window.clothReadouts = (function () {
     return { name: what, note: fabric + ' · ' + balance };
   }
 
+  // The frame rate: frames counted over a window of time. The animation frames' times go into
+  // a ring (no allocation per frame); the rate is the gaps counted back from the latest frame
+  // until they span FPS_WINDOW seconds and number FPS_MIN_GAPS, over the time they span: 1 /
+  // their mean gap (a frame every 0.5 s reads 2; a stall in the window counts whole). An average of 1 / gap over gaps is not a rate: after
+  // a long stall the burst of short frames dominates it (a 5.6 frames/s page read 16-43).
+  const FPS_WINDOW = 1.0;
+  const FPS_MIN_GAPS = 4;
+  const FPS_RING = 256;        // frames kept: more than a 1 s window holds at 240 Hz
+
+  function frameClock() {
+    const times = new Float64Array(FPS_RING);
+    let count = 0, next = 0;
+    return {
+      // A frame drawn at `t` seconds.
+      push: function (t) { times[next] = t; next = (next + 1) % FPS_RING; if (count < FPS_RING) count++; },
+      // Frames per second over the window ending at the latest frame (NaN before two frames).
+      rate: function () {
+        if (count < 2) return NaN;
+        const newest = times[(next - 1 + FPS_RING) % FPS_RING];
+        let gaps = 0, oldest = newest;
+        while (gaps + 1 < count && (newest - oldest < FPS_WINDOW || gaps < FPS_MIN_GAPS)) {
+          oldest = times[(next - 2 - gaps + 2 * FPS_RING) % FPS_RING];
+          gaps++;
+        }
+        return newest > oldest ? gaps / (newest - oldest) : NaN;
+      },
+      reset: function () { count = 0; next = 0; },
+    };
+  }
+
   function fmtPct(v) { return window.clothUI.fmt(100 * v, 2) + '%'; }
 
   function fmt(v) { return window.clothUI.fmt(v, 4); }
@@ -92,5 +122,6 @@ window.clothReadouts = (function () {
     return { show: show };
   }
 
-  return { AUTO_FLOOR: AUTO_FLOOR, scaleOf: scaleOf, legendOf: legendOf, create: create };
+  return { AUTO_FLOOR: AUTO_FLOOR, scaleOf: scaleOf, legendOf: legendOf, create: create, frameClock: frameClock,
+           FPS_WINDOW: FPS_WINDOW, FPS_MIN_GAPS: FPS_MIN_GAPS };
 })();

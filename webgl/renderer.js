@@ -175,6 +175,13 @@ window.clothRenderer = (function () {
       panels.forEach(function (p) { p.fit(); });
     };
 
+    // Wait until the GPU has drawn everything issued (the render readout's sample: without
+    // it a timer sees only the issuing of the draw, and the drawing itself is paid unseen at
+    // the next frame's swap).
+    r.finish = function () {
+      if (!r.lost && !gl.isContextLost()) gl.finish();
+    };
+
     // Clear the whole canvas: a frame starts here, then each panel draws into its rectangle.
     r.begin = function () {
       r.drawCalls = 0;

@@ -110,6 +110,7 @@ window.clothSeam = (function () {
           scale: state.scale, fullScale: state.fullScale, autoFloor: app.autoFloor, frames: sess ? sess.frame : 0,
           preset: state.preset, params: state.params,
           asleep: !!(state.cloth && app.allAsleep()), renders: state.renders,
+          fps: state.fps, fpsAt: state.fpsAt, renderMs: state.renderMs,
           replay: { playing: sess.replay_end >= 0, end: sess.replay_end, ended: sess.replay_ended },
           linkPending: !!state.linkPending, panels: state.panels.length,
           simMs: state.panels.length ? state.panels[0].simMs : NaN, chartLatest: app.charts.latest(0),

@@ -22,6 +22,7 @@ window.clothUI = (function () {
   const TEXT_INPUTS = { text: 1, number: 1, search: 1, email: 1, url: 1, tel: 1, password: 1 };
   const LEGEND_TOP = { max: '(top: max)', high: '(top: 99%)', floor: '(top: floor)', fixed: '(top: fixed)' };
   const ARROWS = { ArrowLeft: 1, ArrowRight: 1, ArrowUp: 1, ArrowDown: 1 };
+  const BOX_SHOWN = 1 << 20;     // characters the Scene JSON box shows at most (see the box below)
 
   // Does the focused element use this key itself (see the keydown handler)?
   function ownsKey(t, k) {
@@ -164,10 +165,41 @@ window.clothUI = (function () {
       r.addEventListener('change', function () { if (r.checked) h.scaleMode(r.value); });
     });
     window.clothFields.attach(el.fullScale, 'fullScale', function (text) { h.fullScale(text); });
+    // The Scene JSON box never holds more than BOX_SHOWN characters: a textarea lays out all
+    // of its text, and 17 MB pasted blocked the page for 8 s before Load could refuse it. A
+    // longer text is held aside, unshown, and Load reads it; one past the scene limit is
+    // refused as it is pasted or dropped, from its length (every character is a byte or more
+    // in UTF-8), before anything reads it.
+    const limit = window.clothCore.sceneLimit();
+    const boxHint = el.json.placeholder;
+    let heldText = null;
+    function hold(text, what) {
+      heldText = text;
+      el.json.value = '';
+      el.json.placeholder = what + ' ' + (text.length / 1e6).toFixed(1) + ' MB: too long to show here; Load reads it';
+      ui.note(el.json.placeholder + '.');
+    }
+    function forget() { heldText = null; el.json.placeholder = boxHint; }
+    function intoBox(e, data) {
+      if (!data || Array.prototype.indexOf.call(data.types || [], 'Files') >= 0) return;  // a file: the page's drop
+      const text = data.getData('text/plain') || data.getData('text') || '';
+      if (text.length <= BOX_SHOWN) { forget(); return; }
+      e.preventDefault();
+      if (text.length > limit.bytes) { forget(); ui.error('Scene not pasted: ' + limit.message); return; }
+      hold(text, e.type === 'drop' ? 'Dropped' : 'Pasted');
+    }
+    el.json.addEventListener('paste', function (e) { intoBox(e, e.clipboardData); });
+    el.json.addEventListener('drop', function (e) { intoBox(e, e.dataTransfer); });
+    el.json.addEventListener('input', function () { if (el.json.value !== '') forget(); });
     el.loadJson.addEventListener('click', function () {
-      try { h.loadJson(el.json.value); } catch (e) { /* shown in the banner */ }
+      const text = heldText !== null && el.json.value === '' ? heldText : el.json.value;
+      try { h.loadJson(text); } catch (e) { /* shown in the banner */ }
     });
-    el.showJson.addEventListener('click', function () { el.json.value = h.currentJson(); });
+    el.showJson.addEventListener('click', function () {
+      const text = h.currentJson();
+      if (text.length > BOX_SHOWN) hold(text, 'The current scene is');
+      else { forget(); el.json.value = text; }
+    });
     $('charts-on').addEventListener('change', function () { h.charts($('charts-on').checked); });
     $('btn-cut').addEventListener('click', function () { h.cutTool(); });
     $('btn-replay').addEventListener('click', function () { h.replay(); });

@@ -16,7 +16,7 @@ import time
 import pytest
 
 HERE = pathlib.Path(__file__).absolute().parent
-sys.path.insert(0, str(HERE.parent / 'browser'))   # browser_helpers and the Chromium tests reused here
+sys.path.insert(0, str(HERE.parent))   # browser_helpers and the Chromium tests reused here
 
 from browser_helpers import DIST, ROOT  # noqa: E402,F401 (test_parity imports them from `conftest`)
 from engine_drivers import ENGINES, Xvfb, missing  # noqa: E402

@@ -18,7 +18,7 @@ def run_without_engines(ci):
     if ci:
         env['CI'] = 'true'
     return subprocess.run([sys.executable, '-m', 'pytest', '-q', '-rs', '-p', 'no:cacheprovider',
-                           'tests/engines/test_engines.py', '-k', 'opens_from_file'],
+                           'tests/browser/engines/test_engines.py', '-k', 'opens_from_file'],
                           cwd=ROOT, env=env, capture_output=True, text=True, timeout=300)
 
 
