@@ -60,6 +60,7 @@ class Scene:
         self.settings = None
         # Model 1's keys as read, for legacy_note: [key, what became of it] pairs.
         self.legacy = []
+        self.model_given = False   # the scene said its model (a scene without one is model 1's)
 
 
 def off(k):
@@ -114,8 +115,10 @@ def legacy_note(scene):
     parts = []
     for i in range(len(scene.legacy)):
         parts.append(scene.legacy[i][0] + ' ' + scene.legacy[i][1])
-    text = ('made before the membrane model (model ' + str(scene.model) + '): it runs as a '
-            'membrane of its fabric')
+    text = 'made before the membrane model (model ' + str(scene.model) + ')'
+    if not scene.model_given:
+        text += ', as a scene without a "model" key is read (a new scene says "model": ' + str(MODEL) + ')'
+    text += ': it runs as a membrane of its fabric'
     if len(parts) > 0:
         text += '; ' + '; '.join(parts)
     return text
@@ -177,6 +180,7 @@ def scene_from_object(obj):
     s.model = 1
     if has_key(obj, 'model'):
         s.model = read(obj, 'model', MODEL)
+        s.model_given = True
     old = s.model < MODEL
     for key in key_list(obj):
         if not known(SCENE_KEYS, key) and not (old and known(LEGACY_KEYS, key)):

@@ -274,3 +274,25 @@ def test_the_readmes_fabric_table_is_the_cores():
     text = (Path(__file__).resolve().parent.parent / 'README.md').read_text()
     for f in FABRICS:
         assert '| %s | %g | %g | %g | %s |' % (f[0], f[2], f[3], f[4], f[5]) in text, f[0]
+
+
+def test_the_load_notes_read_true_when_an_optional_key_is_missing_zero_or_at_its_limits():
+    """Every note built from a scene's optional keys (the model, the solver and the fabric's
+    numbers) says what the scene holds: a scene without `model` is not said to have one, a
+    scene of the current model gets no legacy note, and no note shows a fallback's -1, NaN or
+    None."""
+    base = {'cols': 3, 'rows': 3, 'spacing': 0.1}
+    said = legacy_note(load(json.dumps(base)).scene)
+    assert 'without a "model" key' in said and '"model": %d' % MODEL in said, said
+    said = legacy_note(load(json.dumps(dict(base, model=1))).scene)
+    assert said.startswith('made before the membrane model (model 1):') and 'without' not in said, said
+    def lowest(k):
+        return spec(k).lo * 1.001 + 1e-6 if spec(k).lo_open else spec(k).lo
+
+    fabric_keys = ('stretch', 'shear', 'density')
+    for keys in ({}, {k: lowest(k) for k in fabric_keys}, {k: spec(k).hi for k in fabric_keys},
+                 {'tear': None}, {'tear': lowest('tear')}, {'frames': 0}, {'wind': [0, 0], 'gust': [0, 1]}):
+        cloth = load(json.dumps(dict(base, model=MODEL, **keys)))
+        for note in notes(cloth):
+            assert not any(w in note for w in ('-1', 'nan', 'NaN', 'None', 'undefined')), (keys, note)
+        assert legacy_note(cloth.scene) == '', keys

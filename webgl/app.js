@@ -255,7 +255,7 @@
   function replay() {
     const text = recordingText();
     load(text, state.preset, state.view);
-    ui.note('Replaying ' + sess.replay_end + ' frames; a gesture takes over');
+    ui.note(window.clothReadouts.replayNote(sess.replay_end, ''));
   }
 
   function exportRecording() {
@@ -643,7 +643,7 @@
     state.linkPending = true;
     linked.then(function (text) {
       load(text, 'custom', null);
-      ui.note('Replaying the recording from the link (' + sess.replay_end + ' frames); a gesture takes over');
+      ui.note(window.clothReadouts.replayNote(sess.replay_end, 'the link'));
     }).catch(function (e) {
       const shown = own(scenes.PRESETS, state.preset)
         ? 'showing the ' + scenes.PRESETS[state.preset].label + ' preset' : 'the scene shown runs on';

@@ -80,6 +80,17 @@ window.clothReadouts = (function () {
     };
   }
 
+  // The note for a scene that replays: `frames` is the session's replay end (a scene's
+  // optional `frames`; -1 when it has none, and then nothing replays), `from` where it came
+  // from ('the link', or '' for the Replay button).
+  function replayNote(frames, from) {
+    const where = from ? ' from ' + from : '';
+    if (!(frames > 0)) return from ? 'Opened the scene' + where + ': it holds no recorded frames, so it runs live'
+      : 'Nothing recorded yet: the scene restarts from its start';
+    return 'Replaying the recording' + where + ' (' + frames + (frames === 1 ? ' frame' : ' frames') +
+      '); a gesture takes over';
+  }
+
   function fmtPct(v) { return window.clothUI.fmt(100 * v, 2) + '%'; }
 
   function fmt(v) { return window.clothUI.fmt(v, 4); }
@@ -122,6 +133,6 @@ window.clothReadouts = (function () {
     return { show: show };
   }
 
-  return { AUTO_FLOOR: AUTO_FLOOR, scaleOf: scaleOf, legendOf: legendOf, create: create, frameClock: frameClock,
+  return { AUTO_FLOOR: AUTO_FLOOR, scaleOf: scaleOf, legendOf: legendOf, create: create, frameClock: frameClock, replayNote: replayNote,
            FPS_WINDOW: FPS_WINDOW, FPS_MIN_GAPS: FPS_MIN_GAPS };
 })();

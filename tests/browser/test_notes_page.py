@@ -2,6 +2,7 @@
 setting's banner ends with the next setting that applies; a person who takes over a replay is
 told so, and the replay's note goes; the note about a scene's older model does not hide every
 other note."""
+import base64
 import json
 
 from browser_helpers import load_paused
@@ -43,3 +44,27 @@ def test_the_older_models_note_does_not_hide_a_refused_field(open_page):
     pg.js("clothApp.setParam('iterations', 'abc')")
     pg.js('clothApp.advance(10)')
     assert 'Iterations: not a number' in pg.info()['note'], pg.info()['note']
+
+
+def test_the_replay_note_reads_true_for_any_frames_a_scene_holds(open_page):
+    """The note of a replay is built from the scene's optional `frames` (the session's replay
+    end: -1 when the scene has none): it never shows -1, NaN or undefined, and counts right."""
+    pg = open_page('?paused=1')
+    for frames in (-1, 0, 1, 2, 123456, float('nan'), None):
+        for source in ('the link', ''):
+            note = pg.js('([f, s]) => clothReadouts.replayNote(f === null ? undefined : f, s)', [frames, source])
+            assert not any(w in note for w in ('-1', 'NaN', 'undefined', 'null')), (frames, note)
+            if frames in (1, 2, 123456):
+                assert '(%d frame%s)' % (frames, '' if frames == 1 else 's') in note, note
+            else:
+                assert 'replaying' not in note.lower(), note
+
+
+def test_a_link_whose_scene_holds_no_frames_says_it_runs_live(open_page):
+    text = json.dumps({'model': 2, 'cols': 6, 'rows': 5, 'spacing': 0.1, 'pins': [0, 5]})
+    link = base64.urlsafe_b64encode(text.encode()).decode().rstrip('=')
+    pg = open_page('?paused=1#scene-json=' + link)
+    pg.wait_for_function('() => !clothApp.info().linkPending && clothApp.info().note !== ""')
+    note = pg.info()['note']
+    assert 'holds no recorded frames' in note and '-1' not in note, note
+    assert len(pg.state()['positions']) == 30
