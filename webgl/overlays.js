@@ -5,6 +5,9 @@
 
 window.clothOverlays = (function () {
   const PAD = 24;   // CSS px: a finger's width around a held vertex
+  // The most of the canvas's height the overlays' band takes from the views: a phone's stage
+  // (384 px at 360x640) needs 43% for the readouts and a legend note on two lines.
+  const BAND_SHARE = 0.5;
 
   // canvas: the view's canvas; els: the overlay elements; band: the element around them all.
   function create(canvas, els, band) {
@@ -36,14 +39,14 @@ window.clothOverlays = (function () {
         }
       },
       // The band's height at the canvas's foot (CSS px), that views are fitted above so that
-      // the overlays do not cover a cloth at rest. At most 40% of the canvas: on a small
+      // the overlays do not cover a cloth at rest. At most half the canvas: on a small
       // stage a cloth too small to see would be worse. Measured when the layout changes (a
       // resize, compare mode, the charts shown or hidden), not as the readouts' numbers
       // change, so the view never jumps under a hand.
       band: function () {
         const o = band.getBoundingClientRect(), c = canvas.getBoundingClientRect();
         if (!(o.height > 0) || !(c.height > 0)) return 0;
-        return Math.max(0, Math.min(c.bottom - o.top + 4, 0.4 * c.height));
+        return Math.max(0, Math.min(c.bottom - o.top + 4, BAND_SHARE * c.height));
       },
     };
   }

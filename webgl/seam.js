@@ -111,6 +111,7 @@ window.clothSeam = (function () {
           preset: state.preset, params: state.params,
           asleep: !!(state.cloth && app.allAsleep()), renders: state.renders,
           fps: state.fps, fpsAt: state.fpsAt, renderMs: state.renderMs,
+          rects: state.rects.map(function (r) { return [r.x, r.y, r.w, r.h]; }),
           replay: { playing: sess.replay_end >= 0, end: sess.replay_end, ended: sess.replay_ended },
           linkPending: !!state.linkPending, panels: state.panels.length,
           simMs: state.panels.length ? state.panels[0].simMs : NaN, chartLatest: app.charts.latest(0),
