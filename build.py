@@ -30,7 +30,7 @@ DIST_HTML = os.path.join(ROOT, 'dist', 'index.html')
 # The hand-written page, in load order. Every webgl/*.js must be listed here.
 SCRIPTS = ['core.js', 'options.js', 'scenes.js', 'params.js', 'grid.js', 'fields.js', 'runner.js', 'share.js',
            'renderer.js', 'gestures.js', 'input.js', 'canvas2d.js', 'blade.js', 'obstacles.js', 'charts.js', 'overlays.js',
-           'compare.js', 'capture.js', 'ui.js', 'settings.js', 'stage.js', 'readouts.js', 'seam.js', 'app.js']
+           'compare.js', 'webm.js', 'capture.js', 'ui.js', 'settings.js', 'stage.js', 'readouts.js', 'seam.js', 'app.js']
 STYLES = ['style.css']
 # GLSL, inlined as <script type="x-shader/x-vertex|fragment" id="shader-NAME"> for renderer.js.
 SHADERS = ['edge.vert', 'edge.frag', 'mark.vert', 'mark.frag']

@@ -500,7 +500,7 @@
         state.played += allAsleep() ? gap : done * dt;
         sampleCharts(false);
       }
-      if (state.dirty) render();
+      if (state.dirty || capture.recording()) render();
       if (state.trail) state.trail = blade.draw(performance.now());
     } catch (e) {
       setPaused(true);

@@ -88,9 +88,18 @@ window.clothCapture = (function () {
                '); nothing saved; Picture saves a PNG');
           return;
         }
-        save(blob, v.name);
-        note('Video saved as ' + v.name + ' (' + ((performance.now() - v.started) / 1000).toFixed(1) + ' s, ' +
-             v.type.split(';')[0] + ', ' + Math.round(blob.size / 1024) + ' kB)');
+        const ms = performance.now() - v.started;
+        const said = function (saved, why) {
+          save(saved, v.name);
+          note('Video saved as ' + v.name + ' (' + (ms / 1000).toFixed(1) + ' s, ' + v.type.split(';')[0] + ', ' +
+               Math.round(saved.size / 1024) + ' kB' + (why ? '; no duration in its header: ' + why : '') + ')');
+        };
+        // A WebM gets its duration written into its header: without it players cannot seek.
+        if (v.type.indexOf('webm') < 0) { said(blob, ''); return; }
+        blob.arrayBuffer().then(function (buf) {
+          const done = window.clothWebm.withDuration(new Uint8Array(buf), ms);
+          said(done.why ? blob : new Blob([done.bytes], { type: blob.type }), done.why);
+        }).catch(function (e) { said(blob, String(e && e.message || e)); });
       };
       recorder.start(250);
       note('Recording video (' + type.split(';')[0] + '): Stop video saves it');
@@ -103,7 +112,9 @@ window.clothCapture = (function () {
       if (v.recorder.state !== 'inactive') v.recorder.stop();
     }
 
-    // After every drawing: the video's frame (nothing when not recording).
+    // After every drawing: the video's frame (nothing when not recording). While it records,
+    // the app draws every animation frame, paused or not (recording()): a paused stretch is
+    // the paused picture for as long as it lasted, not one frame.
     function drawn() {
       if (video) compose(video.ctx, video.canvas.width, video.canvas.height);
     }

@@ -2,7 +2,11 @@
 pixels, the cloth and the obstacles over it; Video records the stage as it plays
 (MediaRecorder on a canvas's stream, the best format the browser has) and saves it, or says
 why the browser cannot. Runs in Chromium here and in Firefox and WebKit (tests/engines/)."""
+import base64
 import re
+import struct
+
+import pytest
 
 from browser_helpers import png_rgb, wait_settled
 
@@ -98,3 +102,61 @@ def test_video_records_the_stage_or_says_why_not(open_page):
         assert data[:4] == b'\x1a\x45\xdf\xa3'      # EBML: a WebM file
     else:
         assert data[4:8] == b'ftyp'                 # an MP4 file
+
+
+# The saved video (base64) in a <video> of a blank page (the app's own page allows no media):
+# its duration, and whether a seek to its middle lands.
+PLAY = '''(b64) => new Promise(function (done) {
+  const bin = atob(b64), bytes = new Uint8Array(bin.length);
+  for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+  const v = document.createElement('video'); v.muted = true; v.preload = 'auto';
+  v.onerror = function () { done({error: String(v.error && v.error.message)}); };
+  v.onloadedmetadata = function () {
+    const d = v.duration;
+    if (!isFinite(d)) { done({duration: String(d)}); return; }
+    v.onseeked = function () { done({duration: d, at: v.currentTime}); };
+    v.currentTime = d / 2;
+  };
+  v.src = URL.createObjectURL(new Blob([bytes], {type: 'video/webm'})); })'''
+
+
+def webm_duration_ms(data):
+    """The Duration in a WebM's Info (ms), or None: the element 0x4489 of size 8, a float64 of
+    ticks of the TimecodeScale (ns; 1e6 when the file says none)."""
+    at = data.find(b'\x44\x89\x88', 0, 4096)
+    if at < 0:
+        return None
+    ticks = struct.unpack('>d', data[at + 3:at + 11])[0]
+    scale = data.find(b'\x2a\xd7\xb1', 0, 4096)
+    ns = 1e6
+    if scale >= 0:
+        n = data[scale + 3] & 0x7f                  # a one-byte size
+        ns = int.from_bytes(data[scale + 4:scale + 4 + n], 'big')
+    return ticks * ns / 1e6
+
+
+def test_a_saved_video_has_its_duration_and_seeks_even_when_made_paused(open_page):
+    """MediaRecorder's WebM carries no duration: players show no length and cannot seek. The
+    page writes it into the header; a video made while paused holds the paused picture for as
+    long as it was paused (not one frame)."""
+    pg = open_page('?preset=curtain&paused=1')
+    support = pg.js('clothCapture.videoSupport()')
+    if support['why'] or 'webm' not in support['type']:
+        pytest.skip('this browser records no WebM: ' + (support['why'] or support['type']))
+    pg.locator('#btn-video').click()
+    pg.wait_for_timeout(1500)                       # paused all along
+    name, data = saved(pg, lambda: pg.locator('#btn-video').click(), r'Video saved as (cloth-curtain-f\d+\.webm)')
+    note = pg.info()['note']
+    assert 'no duration' not in note, note
+    seconds = float(re.search(r'\((\d+\.\d) s,', note).group(1))
+    assert seconds >= 1.5
+    ms = webm_duration_ms(data)
+    assert ms is not None and ms == pytest.approx(seconds * 1000, abs=100), (ms, seconds)
+    player = pg.context.new_page()
+    played = player.evaluate(PLAY, base64.b64encode(data).decode())
+    player.close()
+    assert isinstance(played.get('duration'), float), played
+    # The paused stretch is in the video: its frames run to the end (within a frame's time
+    # at the recorder's lowest rate), and a seek to the middle lands there.
+    assert played['duration'] == pytest.approx(seconds, abs=0.3), played
+    assert played['at'] == pytest.approx(played['duration'] / 2, abs=0.3), played
