@@ -34,7 +34,9 @@ PROBE = r'''(helpOnly) => {
     let clip = {left: 0, top: 0, right: vw, bottom: vh};
     if (s) {
       const sr = s.getBoundingClientRect(), r0 = e.getBoundingClientRect();
-      if (r0.top < sr.top) s.scrollTop -= sr.top - r0.top; else if (r0.bottom > sr.bottom) s.scrollTop += Math.min(r0.bottom - sr.bottom, r0.top - sr.top);
+      // whole pixels, rounded away: an engine keeps scrollTop whole
+      if (r0.top < sr.top) s.scrollTop -= Math.ceil(sr.top - r0.top);
+      else if (r0.bottom > sr.bottom) s.scrollTop += Math.ceil(Math.min(r0.bottom - sr.bottom, r0.top - sr.top));
       clip = {left: Math.max(0, sr.left), top: Math.max(0, sr.top), right: Math.min(vw, sr.right), bottom: Math.min(vh, sr.bottom)};
     }
     const r = e.getBoundingClientRect();
@@ -80,28 +82,32 @@ PANELS_CLEAR = '''() => { const v = document.getElementById('view').getBoundingC
   return bad; }'''
 
 
-@pytest.mark.parametrize('size', SIZES, ids=['%dx%d' % s for s in SIZES])
-def test_every_control_and_readout_is_on_screen_and_uncovered(open_page, size):
-    phone = size[0] < 500
-    pg = open_page('?paused=1', viewport={'width': size[0], 'height': size[1]}, has_touch=phone, is_mobile=phone)
+def walk(pg, size):
+    """The checks on an open page of `size` (any engine: only js, locators and waits)."""
     pg.wait_for_function('() => /\\d/.test(document.getElementById("r-size").textContent)')
     seen = pg.js(PROBE, False)
-    assert seen['n'] > 30 and seen['bad'] == [], seen
+    assert seen['n'] > 30 and seen['bad'] == [], (size, seen)
     # The help: its card and its Close inside the screen.
-    pg.keyboard.press('h')
+    pg.locator('#btn-help').click()
     seen = pg.js(PROBE, True)
-    assert seen['n'] >= 1 and seen['bad'] == [], seen
+    assert seen['n'] >= 1 and seen['bad'] == [], (size, seen)
     card = pg.js("() => document.querySelector('#help .card').getBoundingClientRect().toJSON()")
     assert card['top'] >= 0 and card['left'] >= 0 and card['bottom'] <= size[1] and card['right'] <= size[0], card
-    pg.keyboard.press('Escape')
+    pg.locator('#help-close').click()
     # Compare mode with the most panels, a note and an error showing.
     pg.js('(n) => clothApp.compare(Array.from({length: n}, (_, i) => ({iterations: i + 2})))', MAX_PANELS)
     pg.js('clothApp.advance(2)')
-    pg.js("document.getElementById('json-box').open = true")
-    pg.locator('#scene-json').fill('{"cols": "many"}')     # a scene refused: the banner
-    pg.locator('#btn-load-json').click()
+    pg.js("() => { document.getElementById('json-box').open = true;"
+          " document.getElementById('scene-json').value = '{\"cols\": \"many\"}'; }")
+    pg.locator('#btn-load-json').click()                    # a scene refused: the banner
     assert pg.info()['panels'] == MAX_PANELS and pg.info()['error'] != ''
     pg.wait_for_timeout(400)                                # the readouts' next refresh
     seen = pg.js(PROBE, False)
-    assert seen['n'] > 30 and seen['bad'] == [], seen
-    assert pg.js(PANELS_CLEAR) == []
+    assert seen['n'] > 30 and seen['bad'] == [], (size, seen)
+    assert pg.js(PANELS_CLEAR) == [], size
+
+
+@pytest.mark.parametrize('size', SIZES, ids=['%dx%d' % s for s in SIZES])
+def test_every_control_and_readout_is_on_screen_and_uncovered(open_page, size):
+    phone = size[0] < 500
+    walk(open_page('?paused=1', viewport={'width': size[0], 'height': size[1]}, has_touch=phone, is_mobile=phone), size)

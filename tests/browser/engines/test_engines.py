@@ -24,6 +24,9 @@ import test_recording_page as rec
 import test_render
 import test_obstacles_page as obstacles_page
 import test_capture_page as capture_page
+import test_layout_page as layout_page
+import test_notes_page as notes_page
+import test_readouts_page as readouts_page
 from test_parity import SCENES, grid
 from test_compare_page import PAIR
 
@@ -602,3 +605,26 @@ def test_video_records_the_stage_or_says_why_not(open_page):
 
 def test_the_wind_and_gusts_fields_set_the_air_live_and_record_it(open_page):
     obstacles_page.test_the_wind_and_gusts_fields_set_the_air_live_and_record_it(open_page)
+
+
+# ---- issue #41: honest readouts, limits at once, true notes, every control on screen -----------
+
+def test_fps_is_frames_over_time_not_a_mean_of_one_over_gap(open_page):
+    readouts_page.test_fps_is_frames_over_time_not_a_mean_of_one_over_gap(open_page)
+
+
+def test_fps_readout_is_the_rate_of_frames_counted_in_the_page(open_page):
+    readouts_page.rates_match(open_page('?paused=1'), [('chain', 10), ('curtain', 60), ('large', 200)])
+
+
+def test_the_replay_note_reads_true_for_any_frames_a_scene_holds(open_page):
+    notes_page.test_the_replay_note_reads_true_for_any_frames_a_scene_holds(open_page)
+    notes_page.test_a_link_whose_scene_holds_no_frames_says_it_runs_live(open_page)
+
+
+# The laptop sizes: a Firefox or WebKit window here stays wider than a phone (500 and 447 px at
+# least); the phone sizes run in Chromium (tests/browser/test_layout_page.py). The Scene JSON
+# box's paste and drop run there too: these drivers give a page no clipboard or drag data.
+@pytest.mark.parametrize('size', layout_page.SIZES[:2], ids=['%dx%d' % s for s in layout_page.SIZES[:2]])
+def test_every_control_and_readout_is_on_screen_and_uncovered(open_page, size):
+    layout_page.walk(open_page('?paused=1', size=size), size)
