@@ -17,6 +17,7 @@ a fresh closure on every call, and the hot path must not allocate.
 """
 
 from cloth.host import f64
+from cloth.fabrics import HEM_LAYERS, HEM_WIDTH
 from cloth.values import SceneError
 from cloth.keys import solver_index
 from cloth.solvers import REGISTRY, SEED_SOLVER
@@ -47,13 +48,17 @@ def new_cloth(scene):
 def set_masses(cloth, density):
     """Each vertex's mass: density times the area it stands for, a spacing square inside, half
     of it on an edge and a quarter at a corner, so the cloth weighs density times its area on
-    every grid (a grid of one row or column stands for a strip one spacing wide)."""
+    every grid (a grid of one row or column stands for a strip one spacing wide), and on the
+    border the hem's (HEM_LAYERS * HEM_WIDTH of fabric per length of border: a border vertex
+    stands for one spacing of it, a corner for half a spacing on each side)."""
     h = cloth.spacing
+    hem = density * HEM_LAYERS * HEM_WIDTH * h
     for r in range(cloth.rows):
         ay = h if cloth.rows == 1 or (r > 0 and r < cloth.rows - 1) else 0.5 * h
         for c in range(cloth.cols):
             ax = h if cloth.cols == 1 or (c > 0 and c < cloth.cols - 1) else 0.5 * h
-            cloth.mass[r * cloth.cols + c] = density * ax * ay
+            k = r * cloth.cols + c
+            cloth.mass[k] = density * ax * ay + (hem if topology.on_border(cloth, k) else 0.0)
 
 
 def configure(cloth, scene):

