@@ -33,7 +33,7 @@ SCRIPTS = ['core.js', 'options.js', 'scenes.js', 'params.js', 'grid.js', 'fields
            'compare.js', 'webm.js', 'capture.js', 'ui.js', 'settings.js', 'stage.js', 'readouts.js', 'seam.js', 'app.js']
 STYLES = ['style.css']
 # GLSL, inlined as <script type="x-shader/x-vertex|fragment" id="shader-NAME"> for renderer.js.
-SHADERS = ['edge.vert', 'edge.frag', 'mark.vert', 'mark.frag']
+SHADERS = ['colour.glsl', 'edge.vert', 'edge.frag', 'cell.vert', 'cell.frag', 'mark.vert', 'mark.frag']
 TEMPLATE = 'index.html'
 
 _IMPORT_NAMED = re.compile(r"^import\s*\{([^}]*)\}\s*from\s*'\./([^']+)\.js';?\s*$")

@@ -15,7 +15,13 @@
 // each with its own arrays, its own rectangle of the canvas and its own world -> pixel
 // view. r.begin() clears the canvas; each panel then draws into its rectangle.
 //
-// Colour (fragment shader, t = clamp(value / scale, 0, 1)):
+// Dense grids: where a cell is under FILL_CELL_CSS pixels, edges thinner than a pixel and
+// closer than two alias with the pixel grid into bands that are not in the field (a 150x150
+// curtain showed a stripe every 13 rows over a smooth strain). There the cells are filled
+// instead, one indexed draw of two triangles a cell, each vertex coloured by the largest value
+// of its edges (strain) or its node stress, interpolated across the cell.
+//
+// Colour (shaders/colour.glsl, t = clamp(value / scale, 0, 1)):
 //   strain: value = |diff| of the edge at both ends, red = base + (1 - base) * t,
 //           so brightness grows linearly with |diff| and an unstrained edge stays visible;
 //   stress: value = node Q at each end, colour = mix(blue, red, t): the gradient
@@ -27,6 +33,7 @@ window.clothRenderer = (function () {
   const BACKGROUND = [0.075, 0.082, 0.098];
   const EDGE_HALF_WIDTH_CSS = 0.75; // half the edge width, CSS pixels (dense grids: thinner)
   const DENSE_CELL_CSS = 8;         // below this grid cell size (CSS px) edges thin out
+  const FILL_CELL_CSS = 4;          // below this one the cells are filled instead (see above)
   const PIN_RADIUS_CSS = 4.5;
   const HELD_RADIUS_CSS = 8;
 
@@ -104,7 +111,8 @@ window.clothRenderer = (function () {
       return r;
     }
 
-    let inst = null, edgeProg = null, markProg = null;
+    let inst = null, edgeProg = null, markProg = null, cellProg = null;
+    let bigIndices = false;   // 32-bit element indices (WebGL 2, or WebGL 1's extension)
     let cornerBuf = null, markCornerBuf = null;
     let gen = 0;          // bumped when the GL objects are made again (a restored context)
 
@@ -123,7 +131,10 @@ window.clothRenderer = (function () {
           draw: function (mode, first, count, n) { ext.drawArraysInstancedANGLE(mode, first, count, n); },
         };
       }
-      edgeProg = program(gl, shader('edge.vert'), shader('edge.frag'), ['a_corner', 'a_pa', 'a_pb', 'a_val'], 'edge');
+      const colour = shader('colour.glsl');
+      edgeProg = program(gl, shader('edge.vert'), colour + shader('edge.frag'), ['a_corner', 'a_pa', 'a_pb', 'a_val'], 'edge');
+      cellProg = program(gl, shader('cell.vert'), colour + shader('cell.frag'), ['a_pos', 'a_val'], 'cell');
+      bigIndices = version === 2 || !!gl.getExtension('OES_element_index_uint');
       markProg = program(gl, shader('mark.vert'), shader('mark.frag'), ['a_corner', 'a_center', 'a_kind'], 'marker');
       cornerBuf = gl.createBuffer();
       gl.bindBuffer(gl.ARRAY_BUFFER, cornerBuf);
@@ -200,7 +211,12 @@ window.clothRenderer = (function () {
 
     function makePanel() {
       const p = {};
-      let edgeBuf = null, markBuf = null, bufGen = -1;
+      let edgeBuf = null, markBuf = null, cellBuf = null, cellIdxBuf = null, bufGen = -1;
+      // The cells: [x, y, value] per vertex, two triangles per intact cell (indices), and
+      // the scratch that finds them; made per scene, the indices again when edges go.
+      let cellData = new Float32Array(0), cellSum = new Float32Array(0);
+      let cellIdx = new Uint32Array(0), right = new Uint8Array(0), down = new Uint8Array(0);
+      let cellView = cellData, nCellIdx = 0, cellsFor = -1, cols = 0, rows = 0;
       let edgeData = new Float32Array(0), markData = new Float32Array(0);
       let edgeView = edgeData;  // edgeData's first 6 * n_edges floats, made once per scene
       let edgeCap = 0, markCap = 0;
@@ -219,6 +235,11 @@ window.clothRenderer = (function () {
         markBuf = gl.createBuffer();
         gl.bindBuffer(gl.ARRAY_BUFFER, markBuf);
         gl.bufferData(gl.ARRAY_BUFFER, markData.byteLength || 4, gl.DYNAMIC_DRAW);
+        cellBuf = gl.createBuffer();
+        gl.bindBuffer(gl.ARRAY_BUFFER, cellBuf);
+        gl.bufferData(gl.ARRAY_BUFFER, cellData.byteLength || 4, gl.DYNAMIC_DRAW);
+        cellIdxBuf = gl.createBuffer();
+        cellsFor = -1;
         bufGen = gen;
       }
 
@@ -255,7 +276,68 @@ window.clothRenderer = (function () {
         }
         edgeView = edgeData.subarray(0, 6 * ne);
         spacing = snap.spacing > 0 ? snap.spacing : 1;
+        if (nv > cellSum.length) {
+          cellData = new Float32Array(3 * nv);
+          cellSum = new Float32Array(nv);
+          right = new Uint8Array(nv);
+          down = new Uint8Array(nv);
+          gl.bindBuffer(gl.ARRAY_BUFFER, cellBuf);
+          gl.bufferData(gl.ARRAY_BUFFER, cellData.byteLength, gl.DYNAMIC_DRAW);
+        }
+        const cells = Math.max(snap.cols - 1, 0) * Math.max(snap.rows - 1, 0);
+        if (6 * cells > cellIdx.length) cellIdx = new Uint32Array(6 * cells);
+        cellView = cellData.subarray(0, 3 * nv);
+        cols = snap.cols; rows = snap.rows;
+        cellsFor = -1;
       };
+
+      // The intact cells' triangles (its four structural edges all there), for the edges
+      // the snapshot has: again only when their number changes (a tear or a cut).
+      function findCells(snap) {
+        if (cellsFor === snap.n_edges) return;
+        const nv = snap.n_verts, ea = snap.edge_a, eb = snap.edge_b;
+        for (let k = 0; k < nv; k++) { right[k] = 0; down[k] = 0; }
+        for (let e = 0; e < snap.n_edges; e++) {
+          const a = Math.min(ea[e], eb[e]), b = Math.max(ea[e], eb[e]);
+          if (b === a + 1) right[a] = 1;
+          else if (b === a + cols) down[a] = 1;
+        }
+        nCellIdx = 0;
+        for (let r = 0; r + 1 < rows; r++) {
+          for (let c = 0; c + 1 < cols; c++) {
+            const k = r * cols + c;
+            if (!right[k] || !down[k] || !right[k + cols] || !down[k + 1]) continue;
+            cellIdx[nCellIdx++] = k; cellIdx[nCellIdx++] = k + 1; cellIdx[nCellIdx++] = k + cols;
+            cellIdx[nCellIdx++] = k + 1; cellIdx[nCellIdx++] = k + cols + 1; cellIdx[nCellIdx++] = k + cols;
+          }
+        }
+        gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, cellIdxBuf);
+        gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, cellIdx.subarray(0, nCellIdx), gl.DYNAMIC_DRAW);
+        cellsFor = snap.n_edges;
+      }
+
+      // Each vertex's colour value into cellData (with its position): the largest of its
+      // structural edges' values (strain: the brightest edge there, as the edges would show
+      // it; a curtain's rows are slack and its columns carry the weight, and a mean would
+      // halve it), or its node stress.
+      function vertexValues(snap, stressMode) {
+        const nv = snap.n_verts, pos = snap.pos, cd = cellData;
+        if (stressMode) {
+          const q = snap.vertex_value;
+          for (let k = 0; k < nv; k++) cellSum[k] = q[k];
+        } else {
+          for (let k = 0; k < nv; k++) cellSum[k] = 0;
+          const ea = snap.edge_a, eb = snap.edge_b, v = snap.edge_value;
+          for (let e = 0; e < snap.n_edges; e++) {
+            const x = Math.abs(v[e]);
+            if (x > cellSum[ea[e]]) cellSum[ea[e]] = x;
+            if (x > cellSum[eb[e]]) cellSum[eb[e]] = x;
+          }
+        }
+        for (let k = 0, o = 0; k < nv; k++, o += 3) {
+          cd[o] = pos[2 * k]; cd[o + 1] = pos[2 * k + 1]; cd[o + 2] = cellSum[k];
+        }
+      }
 
       p.setView = function (b) { view = { x0: b.x0, x1: b.x1, y0: b.y0, y1: b.y1 }; p.fit(); };
       // The panel's rectangle, CSS px inside the canvas (null: all of it).
@@ -300,7 +382,11 @@ window.clothRenderer = (function () {
         const pos = snap.pos, ea = snap.edge_a, eb = snap.edge_b;
         const ed = edgeData;
         const stressMode = mode === 'stress';
-        if (stressMode) {
+        const fill = bigIndices && cols > 1 && rows > 1 && spacing * s < FILL_CELL_CSS;
+        if (fill) {
+          findCells(snap);
+          vertexValues(snap, stressMode);
+        } else if (stressMode) {
           const q = snap.vertex_value;
           for (let e = 0, o = 0; e < ne; e++, o += 6) {
             const a = ea[e], b = eb[e];
@@ -336,7 +422,29 @@ window.clothRenderer = (function () {
         gl.viewport(vx, canvas.height - vtop - vh, vw, vh);
         const offX = (ox - b.x) * px + (b.x * px - vx), offY = (oy - b.y) * px + (b.y * px - vtop);
 
-        if (ne > 0) {
+        if (fill && nCellIdx > 0) {
+          gl.bindBuffer(gl.ARRAY_BUFFER, cellBuf);
+          gl.bufferSubData(gl.ARRAY_BUFFER, 0, cellView);
+          gl.useProgram(cellProg.prog);
+          const u = cellProg.u;
+          gl.uniform2f(u.u_scale, s * px, -s * px);
+          gl.uniform2f(u.u_offset, offX, offY);
+          gl.uniform2f(u.u_viewport, vw, vh);
+          gl.uniform1f(u.u_mode, stressMode ? 1 : 0);
+          gl.uniform1f(u.u_invScale, scale > 1e-12 ? 1 / scale : 0);
+          gl.uniform1f(u.u_base, STRAIN_BASE);
+          for (let i = 2; i <= 3; i++) gl.disableVertexAttribArray(i);
+          gl.enableVertexAttribArray(0);
+          gl.enableVertexAttribArray(1);
+          inst.divisor(0, 0);
+          inst.divisor(1, 0);
+          gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 12, 0);
+          gl.vertexAttribPointer(1, 1, gl.FLOAT, false, 12, 8);
+          gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, cellIdxBuf);
+          gl.drawElements(gl.TRIANGLES, nCellIdx, gl.UNSIGNED_INT, 0);
+          r.drawCalls++;
+        }
+        if (!fill && ne > 0) {
           gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
           gl.bufferSubData(gl.ARRAY_BUFFER, 0, edgeView);
           gl.useProgram(edgeProg.prog);

@@ -175,3 +175,29 @@ def test_presets_load_run_and_fit_the_view(open_page, preset):
     inside = sum(1 for sx, sy in st['screen']
                  if box['left'] <= sx <= box['right'] and box['top'] <= sy <= box['bottom'])
     assert inside == len(st['screen'])
+
+
+@pytest.mark.parametrize('n', [150, 200])
+def test_a_dense_cloth_shows_its_smooth_field_without_bands(open_page, n):
+    """A curtain's strain falls smoothly from its rod to its hem (a column carries the weight
+    below it). Drawn as edges thinner than a pixel and closer than two, the rows aliased with
+    the pixel grid into bands every dozen rows; a dense grid is drawn as filled cells, so the
+    red down the middle of the cloth falls row after row with no band, and it is as bright
+    at the rod as the brightest edges there are (the Auto scale's 99%)."""
+    from cloth.presets import preset_scene
+    from cloth.fabrics import fabric
+    obj = preset_scene('curtain', n, n)
+    f = fabric('denim')
+    obj['stretch'], obj['shear'], obj['density'] = f[2], f[3], f[4]
+    pg = open_page(viewport={'width': 1000, 'height': 700})
+    load_paused(pg, json.dumps(obj))
+    pg.js('clothApp.advance(240)')
+    st = pg.state()
+    x = st['screen'][n // 2][0]
+    top, bottom = st['screen'][n // 2][1], st['screen'][(n - 1) * n + n // 2][1]
+    assert bottom - top < 4 * n, 'the grid is not dense here'
+    ys = list(range(int(top) + 8, int(bottom) - 3))   # below the pins' markers
+    reds = [c[0] for c in pg.js('(p) => clothApp.pixels(p)', [[x + 0.5, y + 0.5] for y in ys])]
+    rises = [(ys[i], reds[i], reds[i + 1]) for i in range(len(reds) - 1) if reds[i + 1] > reds[i] + 2]
+    assert not rises, rises                       # down the cloth the red never comes back up
+    assert reds[0] - reds[-1] > 40, (reds[0], reds[-1])
