@@ -23,7 +23,7 @@ import math
 
 from cloth.values import SceneError
 from cloth.topology import walk_grip, label_pieces
-from cloth.integrate import rest_at
+from cloth.integrate import rest_at, restart_at
 
 # A person's pull: enough to lift and carry every preset's cloth in the heaviest fabric the
 # page offers (the Large cloth, 2 x 2 m of denim, weighs 16 N) and a little more, not so much
@@ -31,6 +31,12 @@ from cloth.integrate import rest_at
 HAND_FORCE = 20.0
 # A hand's grip: the vertices within this distance of the held one along the cloth.
 HAND_RADIUS = 0.02
+# A clamp's width: how much of an edge a preset's clamp holds, and the pins a hand on a pin
+# carries with it (a clamp moves whole). Six centimetres, two vertices of Two corners at 30x30:
+# a clamp held by one vertex is a pivot at 30x30 and 60x60 and a clamp from 120x120 on, and the
+# woven fabrics' fields then differed 50-110% between the grids (the exact statics: 12% at 30
+# against 60 with the clamp resolved at both).
+CLAMP = 0.06
 # Its springs' stiffness near the hand, all together: the pull is HAND_STIFFNESS times the
 # distance up to about HAND_FORCE / HAND_STIFFNESS = 5 mm (the vertex is 1 mm off the hand
 # while it pulls with a fifth of its force), and levels off at HAND_FORCE beyond.
@@ -67,6 +73,7 @@ def grab(cloth, k, x, y):
     cloth.hand_from[k + k + 1] = y
     cloth.hold_from[k + k] = x
     cloth.hold_from[k + k + 1] = y
+    cloth.hand_acted[k] = 0
     regrip(cloth)
     wake(cloth)
 
@@ -97,6 +104,14 @@ def release(cloth, k):
     if cloth.held[k] == 1:
         cloth.n_held -= 1
     cloth.held[k] = 0
+    # The hand's pull is in the BDF2 history of what it gripped (the last step's velocity
+    # change), which the next step would extrapolate: a chain's end held still for a frame
+    # and let go swung 50% of its energy higher. That history starts again from the velocity
+    # now (kept as it is); a tap, with no frame under the hand, leaves it untouched.
+    if cloth.hand_acted[k] != 0:
+        for v in range(cloth.n_verts):
+            if cloth.grip[v] == k:
+                restart_at(cloth, v)
     regrip(cloth)
     wake(cloth)
 
@@ -128,10 +143,18 @@ def wake(cloth):
     cloth.still_frames = 0
 
 
+def near(cloth, k, v, r):
+    """Whether vertex v is within r of vertex k (straight)."""
+    dx = cloth.pos[v + v] - cloth.pos[k + k]
+    dy = cloth.pos[v + v + 1] - cloth.pos[k + k + 1]
+    return dx * dx + dy * dy <= r * r * (1.0 + 1e-9)
+
+
 def regrip(cloth):
     """The grips after any change of holds, pins or edges: each held vertex, in index order,
     grips itself and what is within HAND_RADIUS of it that no earlier hand grips (a hand on a
-    free vertex only free vertices; a hand on a pin pins too); then who is fixed. A vertex
+    free vertex only free vertices; a hand on a pin pins too, and the pins of its clamp, within
+    CLAMP along the cloth); then who is fixed. A vertex
     that starts or stops being fixed starts from rest."""
     n = cloth.n_verts
     grip = cloth.grip
@@ -141,13 +164,17 @@ def regrip(cloth):
     for k in range(n):
         if cloth.held[k] == 0 or grip[k] >= 0:
             continue
-        found = walk_grip(cloth, k, HAND_RADIUS * (1.0 + 1e-9), cloth.grip_dist, cloth.grip_list)
+        on_pin = cloth.pinned[k] != 0
+        reach = CLAMP if on_pin and CLAMP > HAND_RADIUS else HAND_RADIUS
+        found = walk_grip(cloth, k, reach * (1.0 + 1e-9), cloth.grip_dist, cloth.grip_list)
         kept = 0
         for j in range(found):
             v = cloth.grip_list[j]
             if v != k and (grip[v] >= 0 or cloth.held[v] != 0 or
-                           (cloth.pinned[v] != 0 and cloth.pinned[k] == 0)):
+                           (cloth.pinned[v] != 0 and not on_pin)):
                 continue
+            if v != k and cloth.pinned[v] == 0 and not near(cloth, k, v, HAND_RADIUS):
+                continue                          # beyond the hand, only its clamp's pins
             cloth.grip_list[kept] = v
             kept += 1
         for j in range(kept):
@@ -250,3 +277,4 @@ def hands_arrived(cloth):
         k = cloth.grip[cloth.gripped[h]]
         cloth.hand_from[k + k] = cloth.target[k + k]
         cloth.hand_from[k + k + 1] = cloth.target[k + k + 1]
+        cloth.hand_acted[k] = 1

@@ -14,11 +14,8 @@ import math
 
 from cloth.fabrics import fabric, DEFAULT_FABRIC
 from cloth.keys import MODEL, spec
-from cloth.hands import HAND_RADIUS
+from cloth.hands import CLAMP  # a hand on a clamp's end carries the whole clamp (Two corners' carry)
 
-# A clamp holds this much of the cloth's edge: as far as a hand's grip reaches, so that a hand
-# taking hold of a clamp's end carries the whole clamp (the Two corners preset carries one).
-CLAMP = HAND_RADIUS
 # Two corners: the right clamp is carried in to CORNER_SPAN of the width over CARRY_FRAMES
 # (a smooth start and stop), so the cloth hangs slack, its top edge sagging. Carried, not put
 # there at once: a clamp moved 0.3 m in one frame stretches the cloth by as much.

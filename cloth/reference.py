@@ -25,6 +25,7 @@ import scipy.sparse.linalg as spla
 from cloth.api import load
 from cloth.scene import parse_scene
 from cloth.presets import preset_scene
+from cloth.hands import CLAMP
 
 
 # ---- the exact statics of the membrane --------------------------------------------------------
@@ -172,7 +173,7 @@ def at_rest_of(text):
             hands[k][1] = np.array([act.to_x, act.to_y]) if not act.by else \
                 hands[k][0] + np.array([act.to_x, act.to_y])
         elif act.op == 'release' and k in hands:
-            grip = np.sqrt(((pos - pos[k]) ** 2).sum(1)) <= 0.02 * (1 + 1e-9)
+            grip = np.sqrt(((pos - pos[k]) ** 2).sum(1)) <= CLAMP * (1 + 1e-9)
             moved = grip & pinned if pinned[k] else np.zeros(len(pos), dtype=bool)
             pos[moved] += hands[k][1] - hands[k][0]
             del hands[k]

@@ -70,6 +70,7 @@ class Cloth:
         self.target = f64(2 * n)
         self.hand_from = f64(2 * n)
         self.hold_from = f64(2 * n)
+        self.hand_acted = i32(n)  # 1 once a frame has run with the hand on k (hands.release)
         self.grip = i32(n)
         self.offset = f64(2 * n)
         self.aim = f64(2 * n)

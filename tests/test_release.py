@@ -13,11 +13,13 @@ import json
 import math
 
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import example, given, settings, strategies as st
 
 from cloth.presets import PRESETS, preset_scene
 from cloth.hands import HAND_FORCE
 from cloth.step import cut
+from cloth.session import open_session, advance, gesture_grab, gesture_move, gesture_release, \
+    gesture_toggle_pin, gesture_cut
 from helpers import load, step, frame, grab, move, release, pin, unpin, energies, fastest, xy, scene
 
 GAIN = 1e-3
@@ -242,3 +244,61 @@ def test_without_tearing_a_pull_is_held_to_the_hands_force():
     weight = sum(cloth.mass) * 9.81
     assert pull < HAND_FORCE + weight * 1.01
     assert fastest(cloth) < 5.0
+
+
+# ---- compare mode: the same gestures on every panel ------------------------------------------
+
+# Three panels under one pair of hands: the default solver, XPBD, and a woven fabric.
+COMPARE = [{}, {'solver': 'xpbd'}, {'stretch': 5000.0, 'shear': 150.0, 'density': 0.15}]
+
+
+def watch_panels(s, frames):
+    """watch() for every panel of session s, run together: [(rise, moving)] per panel."""
+    before = [energies(p) for p in s.panels]
+    most = [-math.inf] * s.n_panels
+    for _ in range(frames):
+        advance(s, 1)
+        for i, p in enumerate(s.panels):
+            k0, el0, g0 = before[i]
+            k, el, g = energies(p)
+            most[i] = max(most[i], k - (k0 + el0 + g0 - g))
+    return [(most[i], before[i][0] + before[i][1]) for i in range(s.n_panels)]
+
+
+@settings(max_examples=8, deadline=None)
+@given(name=st.sampled_from(['corners', 'curtain', 'towel', 'tearable', 'chain']),
+       n=st.integers(min_value=4, max_value=6),
+       gestures=st.lists(st.tuples(st.sampled_from(['pull', 'tap', 'pin', 'cut']), st.floats(-0.5, 0.5),
+                                   st.floats(-0.5, 0.0), st.integers(1, 10)), min_size=1, max_size=3))
+@example(name='chain', n=4, gestures=[('pull', 0.0, 0.0, 1), ('pull', 0.0, 0.0, 1)])
+def test_random_gestures_in_compare_mode_add_no_energy(name, n, gestures):
+    """Issue #40: after any release, tap, pin, unpin or cut, in compare mode too, no panel's
+    kinetic energy exceeds what it held (kinetic, elastic, and the height it falls) just before;
+    and the panels are the scene's own cloths, each under its own hand."""
+    obj = json.loads(still(name, n))
+    obj['compare'] = COMPARE
+    s = open_session(json.dumps(obj))
+    advance(s, 10)
+    first = s.panels[0]
+    k = bottom_middle(first)
+    for op, dx, dy, frames in gestures:
+        x0, y0 = xy(first, k)
+        if op in ('pull', 'tap'):
+            gesture_grab(s, k, x0, y0)
+            for f in range(1, frames + 1 if op == 'pull' else 1):
+                gesture_move(s, k, x0 + dx * f / frames, y0 + dy * f / frames)
+                advance(s, 1)
+            gesture_release(s, k)
+        elif op == 'pin':
+            gesture_toggle_pin(s, k)                # pinned (or unpinned, the second time)
+        else:
+            w = (first.cols - 1) * first.spacing
+            y = xy(first, first.n_verts // 2)[1] + dy * 0.1
+            gesture_cut(s, -0.1 * w, y, 1.1 * w, y)
+        for rise, moving in watch_panels(s, 20):
+            assert rise <= GAIN * max(moving, 1e-9), (op, rise, moving)
+        assert all(math.isfinite(v) for p in s.panels for v in p.pos)
+        for _ in range(120):
+            if all(p.asleep for p in s.panels):
+                break
+            advance(s, 1)
