@@ -291,6 +291,19 @@ window.clothRenderer = (function () {
         cellsFor = -1;
       };
 
+      // A program that colours by value (edges, cells) in use, with the panel's view (world
+      // metres -> its device pixels) and the colour scale set.
+      function useColoured(prog, px, offX, offY, vw, vh, stressMode, scale) {
+        gl.useProgram(prog.prog);
+        const u = prog.u;
+        gl.uniform2f(u.u_scale, s * px, -s * px);
+        gl.uniform2f(u.u_offset, offX, offY);
+        gl.uniform2f(u.u_viewport, vw, vh);
+        gl.uniform1f(u.u_mode, stressMode ? 1 : 0);
+        gl.uniform1f(u.u_invScale, scale > 1e-12 ? 1 / scale : 0);
+        gl.uniform1f(u.u_base, STRAIN_BASE);
+      }
+
       // The intact cells' triangles (its four structural edges all there), for the edges
       // the snapshot has: again only when their number changes (a tear or a cut).
       function findCells(snap) {
@@ -425,14 +438,7 @@ window.clothRenderer = (function () {
         if (fill && nCellIdx > 0) {
           gl.bindBuffer(gl.ARRAY_BUFFER, cellBuf);
           gl.bufferSubData(gl.ARRAY_BUFFER, 0, cellView);
-          gl.useProgram(cellProg.prog);
-          const u = cellProg.u;
-          gl.uniform2f(u.u_scale, s * px, -s * px);
-          gl.uniform2f(u.u_offset, offX, offY);
-          gl.uniform2f(u.u_viewport, vw, vh);
-          gl.uniform1f(u.u_mode, stressMode ? 1 : 0);
-          gl.uniform1f(u.u_invScale, scale > 1e-12 ? 1 / scale : 0);
-          gl.uniform1f(u.u_base, STRAIN_BASE);
+          useColoured(cellProg, px, offX, offY, vw, vh, stressMode, scale);
           for (let i = 2; i <= 3; i++) gl.disableVertexAttribArray(i);
           gl.enableVertexAttribArray(0);
           gl.enableVertexAttribArray(1);
@@ -447,15 +453,8 @@ window.clothRenderer = (function () {
         if (!fill && ne > 0) {
           gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
           gl.bufferSubData(gl.ARRAY_BUFFER, 0, edgeView);
-          gl.useProgram(edgeProg.prog);
-          const u = edgeProg.u;
-          gl.uniform2f(u.u_scale, s * px, -s * px);
-          gl.uniform2f(u.u_offset, offX, offY);
-          gl.uniform2f(u.u_viewport, vw, vh);
-          gl.uniform1f(u.u_halfWidth, halfWidth(px));
-          gl.uniform1f(u.u_mode, stressMode ? 1 : 0);
-          gl.uniform1f(u.u_invScale, scale > 1e-12 ? 1 / scale : 0);
-          gl.uniform1f(u.u_base, STRAIN_BASE);
+          useColoured(edgeProg, px, offX, offY, vw, vh, stressMode, scale);
+          gl.uniform1f(edgeProg.u.u_halfWidth, halfWidth(px));
           gl.bindBuffer(gl.ARRAY_BUFFER, cornerBuf);
           gl.enableVertexAttribArray(0);
           gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
