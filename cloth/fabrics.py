@@ -36,8 +36,8 @@ FABRICS = [
 # stiffness (HEM_LAYERS * HEM_WIDTH * stretch, N) and mass. Without it a free edge that the
 # load curves (the top edge of Two corners, sagging between its clamps) is a cable of no
 # width in the membrane limit: the exact statics' top-row strain grew 35% a doubling of the
-# grid (cotton, 30 -> 60) and the field across grids differed 40%; hemmed, the top row's mean
-# strain is the same at 30 and 60 and the fields agree within 12% (clamps 6 cm wide).
+# grid (cotton, 30 -> 60) and the field across grids differed 38-40%; hemmed, the top row's
+# mean strain is the same at 30 and 60 and the woven fields differ 18-22% (2 cm clamps).
 HEM_LAYERS = 2.0
 HEM_WIDTH = 0.01
 # The presets' fabric: its stretch under its own weight shows in the colours (a 1.5 m drop

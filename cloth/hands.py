@@ -34,8 +34,8 @@ HAND_RADIUS = 0.02
 # A clamp's width: how much of an edge a preset's clamp holds, and the pins a hand on a pin
 # carries with it (a clamp moves whole). Six centimetres, two vertices of Two corners at 30x30:
 # a clamp held by one vertex is a pivot at 30x30 and 60x60 and a clamp from 120x120 on, and the
-# woven fabrics' fields then differed 50-110% between the grids (the exact statics: 12% at 30
-# against 60 with the clamp resolved at both).
+# woven fabrics' fields then differed 50-110% from 120x120's; resolved at every size, 13-19% at
+# 60x60 and 40-44% at 30x30, near the clamps' ends (python -m bench --fabrics).
 CLAMP = 0.06
 # Its springs' stiffness near the hand, all together: the pull is HAND_STIFFNESS times the
 # distance up to about HAND_FORCE / HAND_STIFFNESS = 5 mm (the vertex is 1 mm off the hand
