@@ -13,7 +13,7 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 
 from conftest import DIST
 from cloth.keys import MODEL
-from browser_helpers import GARBAGE_TOO, bytes_under, steady_bytes_per_frame
+from browser_helpers import steady_bytes_per_frame
 
 SOAK_FRAMES = int(os.environ.get('CLOTH_SOAK_FRAMES', '10000'))
 BATCH = 1000
@@ -58,10 +58,6 @@ def finite_state(page):
         p => Number.isFinite(p[0]) && Number.isFinite(p[1]))''')
 
 
-def sampled_bytes(node):
-    return node['selfSize'] + sum(sampled_bytes(c) for c in node['children'])
-
-
 
 @pytest.mark.soak
 def test_soak_heap_flat_and_no_nan(app):
@@ -84,14 +80,13 @@ def test_soak_heap_flat_and_no_nan(app):
 def test_hot_path_allocates_nothing_per_frame(app):
     page, cdp, _ = app
     page.evaluate('clothApp.advance(3000)')           # warm: until every kernel is optimised
-    frames = 3000
-    cdp.send('HeapProfiler.startSampling', GARBAGE_TOO)
-    page.evaluate('(n) => clothApp.advance(n)', frames)
-    profile = cdp.send('HeapProfiler.stopSampling')['profile']
-    total = sampled_bytes(profile['head'])
-    # Garbage included. One advance() call (the evaluate itself, one measure and one render)
-    # may allocate a few KB; an allocation in the per-frame path would be frames x its size.
-    assert total / frames < 8, 'about %.1f bytes allocated per frame' % (total / frames)
+    # Garbage included, under the page's advance() only: the whole profile also holds what the
+    # browser does between the driver's messages ("(IDLE_EXTERNAL)": 6-44 kB a window, more the
+    # busier the machine) and the driver's own evaluate. One advance() call (one measure and one
+    # render) may allocate a few KB; an allocation in the per-frame path is frames x its size.
+    per_frame = steady_bytes_per_frame(cdp, lambda n: page.evaluate('(n) => clothApp.advance(n)', n),
+                                       3000, 'advance', 8, windows=6)
+    assert per_frame[-1] < 8, 'bytes allocated per frame, window by window: %s' % per_frame
 
 
 def test_a_moving_cloth_allocates_nothing_per_frame(app):
@@ -109,8 +104,11 @@ def test_a_moving_cloth_allocates_nothing_per_frame(app):
         const ops = clothCore.ops(clothApp.cloth());
         ops.grab(1170, 1.5, -1.5); ops.release(1170);
         clothApp.advance(3000); }''' % MODEL)
+    # Up to six windows: a busy machine can leave V8 tiering kernels up and down for a while
+    # (measured beside two busy CPUs: 44, 42, then 40,817 bytes a frame in one window as a
+    # kernel was deoptimised, before and after this session's changes alike).
     per_frame = steady_bytes_per_frame(cdp, lambda n: page.evaluate('(n) => clothApp.advance(n)', n),
-                                       2000, 'advance', 2)
+                                       2000, 'advance', 2, windows=6)
     assert not page.evaluate('clothApp.cloth().asleep')
     assert per_frame[-1] < 2, 'bytes allocated per frame, window by window: %s' % per_frame
 
