@@ -429,7 +429,7 @@
     }
     obstacles.draw(state.panels, state.rects, gestures.moving());
     capture.drawn();
-    // The render readout: one drawing a readout period, timed until the GPU has finished it
+    // The render readout: one drawing a readout period, timed until WebGL's finish() returns
     // (one wait every READOUT_MS, not one a frame: a wait a frame would stall the pipeline).
     if (timed) {
       renderer.finish();

@@ -177,8 +177,7 @@ def test_presets_load_run_and_fit_the_view(open_page, preset):
     assert inside == len(st['screen'])
 
 
-@pytest.mark.parametrize('n', [150, 200])
-def test_a_dense_cloth_shows_its_smooth_field_without_bands(open_page, n):
+def test_a_dense_cloth_shows_its_smooth_field_without_bands(open_page, n=150):
     """A curtain's strain falls smoothly from its rod to its hem (a column carries the weight
     below it). Drawn as edges thinner than a pixel and closer than two, the rows aliased with
     the pixel grid into bands every dozen rows; a dense grid is drawn as filled cells, so the
