@@ -109,7 +109,8 @@ def release(cloth, k):
     # and let go swung 50% of its energy higher. That history starts again from the velocity
     # now (kept as it is); a tap, with no frame under the hand, leaves it untouched.
     if cloth.hand_acted[k] != 0:
-        for v in range(cloth.n_verts):
+        for h in range(cloth.n_gripped):
+            v = cloth.gripped[h]
             if cloth.grip[v] == k:
                 restart_at(cloth, v)
     regrip(cloth)
