@@ -29,28 +29,13 @@ ON_CI = os.environ.get('CI', '').strip().lower() in ('1', 'true', 'yes')
 FIREFOX_ERRORS = ('JavaScript error: file://',)
 
 
-# For the summary at the end: per engine, its version, start-up and the time of its tests.
-SEEN = {}
-
-
-def pytest_runtest_logreport(report):
-    for name in ENGINES:
-        if report.nodeid.endswith('[%s]' % name) and HERE.name in report.nodeid:
-            seen = SEEN.setdefault(name, {'seconds': 0.0, 'tests': set(), 'version': '', 'start': 0.0})
-            seen['seconds'] += report.duration
-            seen['tests'].add(report.nodeid)
-
-
-def pytest_terminal_summary(terminalreporter):
-    for name, seen in sorted(SEEN.items()):
-        terminalreporter.write_line('engine %s %s: %d tests in %.1f s (start-up %.1f s)' % (
-            name, seen['version'] or '(not started)', len(seen['tests']), seen['seconds'], seen['start']))
-
-
 def pytest_collection_modifyitems(config, items):
     for item in items:
         if HERE in pathlib.Path(str(item.fspath)).parents:
             item.add_marker(pytest.mark.engines)
+            # Under pytest-xdist (--dist loadgroup) one worker runs every engine test, so each
+            # engine starts once and only one of their browsers is alive at a time.
+            item.add_marker(pytest.mark.xdist_group('engines'))
 
 
 @pytest.fixture(scope='session')
@@ -84,10 +69,18 @@ def engine(request, xvfb, tmp_path_factory):
     eng = ENGINES[name](xvfb(), downloads)
     eng.downloads = downloads
     eng.started_in = time.time() - t0
-    SEEN.setdefault(name, {'seconds': 0.0, 'tests': set(), 'version': '', 'start': 0.0}).update(
-        version=eng.version, start=eng.started_in)
     yield eng
     eng.quit()
+
+
+@pytest.fixture(autouse=True)
+def engine_in_report(request):
+    """Names the engine, its version and start-up in the test's reports, for the summary at the
+    end (tests/conftest.py: under pytest-xdist only the reports reach the process that prints)."""
+    eng = request.node.funcargs.get('engine')
+    if eng is not None:
+        request.node.user_properties.append(('engine', (eng.name, eng.version, eng.started_in)))
+    yield
 
 
 @pytest.fixture
