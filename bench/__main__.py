@@ -2,7 +2,7 @@
 
     python -m bench              the speed-against-error front (bench/front.py): front.md,
                                  .json, -field.svg, -shape.svg
-    python -m bench --sizes 30,60 the front at those sizes only
+    python -m bench --sizes 30,60 the front at those sizes only: front-30-60.md, ...
     python -m bench --quick      the same at 30x30 for a few configurations (a smoke test:
                                  its files are git-ignored)
     python -m bench --fabrics    every fabric on the three presets: the field against the exact
@@ -90,7 +90,8 @@ def dispatch(args, page, progress, meta):
     rows = front.run(page, args.quick, progress, sizes)
     extra = [('-field.svg', svg_front(rows, 'field', 'Strain-field error against ms per frame', front.DEFAULT)),
              ('-shape.svg', svg_front(rows, 'shape', 'Shape error (widths) against ms per frame', front.DEFAULT))]
-    return 'front', front.markdown(rows, meta), rows, extra
+    name = 'front' if sizes is None else 'front-' + '-'.join(str(n) for n in sizes)
+    return name, front.markdown(rows, meta), rows, extra
 
 
 if __name__ == '__main__':
