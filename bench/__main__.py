@@ -10,7 +10,7 @@
                                  (bench/fabrics.py): fabrics.md, .json
     python -m bench --releases   every preset pulled and let go, and tapped: speeds, energy
                                  (bench/releases.py): releases.md, .json
-    python -m bench --figures    the README's other figures (bench/figures.py): figures.md, .json
+    python -m bench --figures    the docs' other figures (bench/figures.py): figures.md, .json
 
 Everything runs in the shipped page, dist/index.html, in headless Chromium.
 """
@@ -35,7 +35,7 @@ def main(argv=None):
     ap.add_argument('--quick', action='store_true', help='the small sizes only (a smoke test)')
     ap.add_argument('--fabrics', action='store_true', help='every fabric on the three presets')
     ap.add_argument('--releases', action='store_true', help='every preset pulled, let go, tapped')
-    ap.add_argument('--figures', action='store_true', help='the README\'s other figures')
+    ap.add_argument('--figures', action='store_true', help='the docs\' other figures')
     ap.add_argument('--sizes', default=None,
                     help='the front\'s grid sizes, comma-separated (default: 30,60,120,200)')
     ap.add_argument('--out', default=os.path.join(ROOT, 'bench', 'results'),

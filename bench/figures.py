@@ -1,4 +1,4 @@
-"""The README's other figures (`python -m bench --figures`), each measured in the shipped page:
+"""The docs' other figures (`python -m bench --figures`), each measured in the shipped page:
 - the pendulum: a 1 m cotton pendulum released horizontally, its period against the exact
   elliptic one and the height it loses a swing, per solver;
 - sleep: when each preset, as shipped, is put to sleep (s), and what a frame costs then;

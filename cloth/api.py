@@ -149,7 +149,7 @@ def simulate(cloth, frames, trace):
 
 def run(scene_json_text, frames=None, with_trace=False, panel=-1):
     """Run a scene for `frames` frames (None: the scene's own `frames`), or its panel `panel`
-    of a compare list; return the result as JSON text (see README)."""
+    of a compare list; return the result as JSON text (docs/scenes.md)."""
     cloth = load(scene_json_text, panel)
     frames = frames_of(cloth, frames)
     start(cloth, frames, with_trace)

@@ -1,4 +1,4 @@
-"""The README's CPython-only command, `python -m pytest tests --ignore=tests/browser`, starts no
+"""docs/tests.md's CPython-only command, `python -m pytest tests --ignore=tests/browser`, starts no
 browser: every test that drives a browser (Chromium through Playwright, Firefox and WebKit
 through their drivers, the benchmark's page) lives under tests/browser/. Checked on the
 sources, so a new test that starts one outside it fails here before it slows that command."""

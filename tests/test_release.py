@@ -187,7 +187,7 @@ def settle(cloth, most=600):
 @pytest.mark.parametrize('name, n', [
     ('curtain', 9),
     pytest.param('towel', 5, marks=pytest.mark.xfail(
-        strict=True, reason='known limit (README): the part of a held cloth that a lift leaves '
+        strict=True, reason='known limit (docs/physics.md): the part of a held cloth that a lift leaves '
         'slack lags gravity (the sweeps hold a vertex near a slack spring still), so let go on '
         'its way up it rises higher than its energy allows'))])
 def test_a_lift_let_go_on_its_way_up_adds_no_energy(name, n):

@@ -255,7 +255,7 @@ def test_shear_is_a_number_in_model_2():
 
 
 def test_the_keys_table_lists_every_declared_key_once():
-    """`python -m cloth keys` (the README points to it) is derived from KEYS: every key, once,
+    """`python -m cloth keys` (docs/scenes.md points to it) is derived from KEYS: every key, once,
     with its words."""
     import subprocess
     import sys
@@ -269,11 +269,11 @@ def test_the_keys_table_lists_every_declared_key_once():
         fabric(DEFAULT_FABRIC)[2]) in out
 
 
-def test_the_readmes_fabric_table_is_the_cores():
-    """The README's table of fabrics lists cloth/fabrics.py's FABRICS, number for number."""
+def test_the_docs_fabric_table_is_the_cores():
+    """docs/physics.md's table of fabrics lists cloth/fabrics.py's FABRICS, number for number."""
     from pathlib import Path
     from cloth.fabrics import FABRICS
-    text = (Path(__file__).resolve().parent.parent / 'README.md').read_text()
+    text = (Path(__file__).resolve().parent.parent / 'docs' / 'physics.md').read_text()
     for f in FABRICS:
         assert '| %s | %g | %g | %g | %s |' % (f[0], f[2], f[3], f[4], f[5]) in text, f[0]
 

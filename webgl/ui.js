@@ -118,7 +118,7 @@ window.clothUI = (function () {
       const d = SOLVERS[name], chosen = name === SCHEMA.defaultSolver;
       option($('solver'), name, d.label,
              (chosen ? 'The default: ' : '') + d.substeps + ' step' + (d.substeps === 1 ? '' : 's') + ' a frame, ' +
-             d.iterations + ' iteration' + (d.iterations === 1 ? '' : 's') + ' each (see the README)');
+             d.iterations + ' iteration' + (d.iterations === 1 ? '' : 's') + ' each (docs/physics.md)');
     });
     el.preset.addEventListener('change', function () { h.preset(el.preset.value); });
     // The help's numbers and names, from where they are declared.

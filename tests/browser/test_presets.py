@@ -9,7 +9,7 @@ from cloth.api import run
 from cloth.hands import HAND_STIFFNESS
 from cloth.presets import CORNER_SPAN
 
-README_EXAMPLE = {"cols": 20, "rows": 15, "spacing": 0.05, "pins": [0, 5, 10, 14, 19],
+SCRIPTED = {"cols": 20, "rows": 15, "spacing": 0.05, "pins": [0, 5, 10, 14, 19],
                   "damping": 0.5,
                   "actions": [{"frame": 30, "op": "grab", "vertex": 299},
                               {"frame": 60, "op": "move", "vertex": 299, "to": [1.4, -0.3]},
@@ -18,7 +18,7 @@ README_EXAMPLE = {"cols": 20, "rows": 15, "spacing": 0.05, "pins": [0, 5, 10, 14
 
 def test_scripted_actions_play_in_the_page_as_in_the_cli(open_page):
     pg = open_page('?paused=1')
-    text = json.dumps(README_EXAMPLE)
+    text = json.dumps(SCRIPTED)
     pg.js('(t) => clothApp.loadScene(t)', text)
     for frames in (75, 45, 30):       # through the move, the release and after it
         pg.js('(n) => clothApp.advance(n)', frames)

@@ -473,7 +473,7 @@ def test_record_export_link_and_replay_give_the_same_positions(open_page):
 
 
 def test_link_copies_the_address_from_a_key_and_from_the_button(open_page, engine, request):
-    """README: "Link (L) copies an address with the recording in its fragment". Found here:
+    """The Link button (L) copies an address that replays the recording. Found here:
     writeText once the link was made, after CompressionStream's promise, was refused in WebKit
     (NotAllowedError: no longer the key press or click) and the page fell back to a prompt
     every time. share.copyLater writes a ClipboardItem whose text is a Promise of the link, in
