@@ -16,8 +16,6 @@ import functools
 import json
 import sys
 
-import pytest
-
 from browser_helpers import DIST, ROOT, free_vertex, png_rgb
 import test_page
 import test_recording_page as rec
@@ -27,7 +25,7 @@ import test_capture_page as capture_page
 import test_layout_page as layout_page
 import test_notes_page as notes_page
 import test_readouts_page as readouts_page
-from test_parity import SCENES, grid
+from catalogue import CATALOGUE
 from test_compare_page import PAIR
 
 sys.path.insert(0, str(ROOT))
@@ -114,18 +112,11 @@ BAD = test_page.MALFORMED + ['{"cols": 2, "rows": 2, "spacing": 1, "a\\nb": 1}',
                              '{"cols": 2, "rows": 2, "spacing": 1, "\\ud800\\ud83d\\ude00": 1}']
 
 
-# The parity scenes (tests/browser/test_parity.py) but the presets' and fabrics' variants,
-# which Chromium runs: every solver, feature, action and both models, in each engine's JS.
-ENGINE_SCENES = sorted(name for name in SCENES if not name.startswith(('preset-', 'fabric-'))) + \
-    ['preset-corners-jakobsen', 'preset-towel-vbd', 'preset-flag-xpbd', 'fabric-denim']
-
-
 @functools.lru_cache(maxsize=None)
 def cli_cases():
     """[(scene text, frames, what the CLI gives: {'ok': text} or {'error': message})], made once
     for both engines."""
-    cases = [(json.dumps(SCENES[name][0]), SCENES[name][1]) for name in ENGINE_SCENES]
-    cases.append((json.dumps(grid(40, 30, pins=[0, 13, 26, 39])), 20))
+    cases = [(json.dumps(CATALOGUE[name][0]), CATALOGUE[name][1]) for name in sorted(CATALOGUE)]
     cases += [(text, 1) for text in BAD]
     out = []
     for text, frames in cases:
@@ -143,10 +134,10 @@ def test_core_run_is_the_cli_character_for_character(open_page):
         try { return {ok: clothCore.run(t, f)}; }
         catch (e) { return {error: e instanceof Error ? e.message : 'not an Error: ' + String(e)}; } })''',
                 [[text, frames] for text, frames, _ in cases])
-    names = ENGINE_SCENES + ['grid-40x30'] + BAD
+    names = sorted(CATALOGUE) + BAD
     for name, (_, _, want), have in zip(names, cases, got):
         assert have == want, name
-    assert sum('ok' in want for _, _, want in cases) == len(ENGINE_SCENES) + 1
+    assert sum('ok' in want for _, _, want in cases) == len(CATALOGUE)
 
 
 def test_bad_scenes_give_the_cli_message_in_the_page(open_page):
