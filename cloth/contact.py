@@ -8,6 +8,9 @@ import math
 
 # Below this squared length an edge has no direction to push along.
 TINY2 = 1e-30
+# A vertex this close to an obstacle's surface (m) rests on it: keep_out puts it on the
+# surface to rounding, so a millimetre's thousandth is far above rounding and far below a step.
+TOUCH = 1e-6
 
 
 def keep_out(cloth, i):
@@ -40,6 +43,48 @@ def keep_out(cloth, i):
                 y = at[jj + 1] + (hy if dy >= 0.0 else -hy)
     cloth.pos[ii] = x
     cloth.pos[ii + 1] = y
+
+
+def unopposed(cloth, i, fx, fy):
+    """The squared force (fx, fy) on vertex i that the obstacles it rests on do not oppose: the
+    part pushing into an obstacle's surface is met by the contact's reaction, and up to
+    friction times that push, the part along the surface by its friction. What the solve's
+    imbalance counts at a vertex in contact (a cloth lying still on a box is balanced)."""
+    ii = i + i
+    x = cloth.pos[ii]
+    y = cloth.pos[ii + 1]
+    at = cloth.obstacle_at
+    half = cloth.obstacle_half
+    for j in range(cloth.n_obstacles):
+        jj = j + j
+        dx = x - at[jj]
+        dy = y - at[jj + 1]
+        hx = half[jj]
+        hy = half[jj + 1]
+        nx = 0.0
+        ny = 0.0
+        if cloth.obstacle_shape[j] == 0:
+            d2 = dx * dx + dy * dy
+            if d2 > 0.0 and d2 < (hx + TOUCH) * (hx + TOUCH):
+                d = math.sqrt(d2)
+                nx = dx / d
+                ny = dy / d
+        elif dx > -hx - TOUCH and dx < hx + TOUCH and dy > -hy - TOUCH and dy < hy + TOUCH:
+            if hx - abs(dx) < hy - abs(dy):
+                nx = 1.0 if dx >= 0.0 else -1.0
+            else:
+                ny = 1.0 if dy >= 0.0 else -1.0
+        push = fx * nx + fy * ny
+        if push < 0.0:
+            fx -= push * nx
+            fy -= push * ny
+            along = math.sqrt(fx * fx + fy * fy)
+            grip = -push * cloth.obstacle_friction[j]
+            if along <= grip:
+                return 0.0
+            fx *= 1.0 - grip / along
+            fy *= 1.0 - grip / along
+    return fx * fx + fy * fy
 
 
 def collide(pos, prev, inv_mass, cols, rows, count, shape, half, was, now, friction, bounds, row_box):

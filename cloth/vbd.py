@@ -35,7 +35,7 @@ import math
 
 from cloth.host import f64
 from cloth.multigrid import DIAG, hierarchy, galerkin, restrict, prolong, pcg, factor_dense
-from cloth.contact import keep_out
+from cloth.contact import keep_out, unopposed
 
 NAME = 'vbd'
 LABEL = 'Vertex descent + multigrid'
@@ -281,7 +281,7 @@ def sweep(cloth, forward, last):
                 hxx += kh
                 hyy += kh
         if last and grip[i] < 0:
-            f2 += fx * fx + fy * fy
+            f2 += unopposed(cloth, i, fx, fy) if contact else fx * fx + fy * fy
         det = hxx * hyy - hxy * hxy
         mx = (hyy * fx - hxy * fy) / det
         my = (hxx * fy - hxy * fx) / det
