@@ -5,10 +5,12 @@ script, and inline it with the hand-written webgl/ sources into dist/index.html.
     python build.py --check    # exit 1 if dist/index.html is not what the sources give
 
 Why a linker: Transcrypt 3.9 emits only ES modules, and Chromium refuses module
-scripts (and their imports) on a file:// page. So each emitted module is wrapped in
-a function scope, its `import` lines become reads from the modules evaluated
-before it (dependency order) and its `export`s become the function's return value.
-Only the forms Transcrypt emits are accepted; anything else stops the build.
+scripts (and their imports) on a file:// page. So each module, the core's and the
+page's own (webgl/, in folders by layer), is wrapped in a function scope, its
+`import` lines become reads from the modules evaluated before it (dependency order)
+and its `export`s become the function's return value. Only single-line
+`import {a, b as c} from './x.js'`, `import * as m from '../y/z.js'`, `export <decl>`
+and `export {a, b as c}` are accepted; anything else stops the build.
 
 Reproducible: Transcrypt's timestamp line and sourceMappingURL lines are dropped,
 files are read in a fixed order, so the same sources give a byte-identical dist/.
@@ -16,6 +18,7 @@ Transcrypt's -b wipes its output folder, so it writes into build/, never dist/.
 """
 import argparse
 import os
+import posixpath
 import re
 import subprocess
 import sys
@@ -27,17 +30,18 @@ TRANSCRYPT_OUT = os.path.join(ROOT, 'build', 'transcrypt')
 WEBGL = os.path.join(ROOT, 'webgl')
 DIST_HTML = os.path.join(ROOT, 'dist', 'index.html')
 
-# The hand-written page, in load order. Every webgl/*.js must be listed here.
-SCRIPTS = ['core.js', 'options.js', 'scenes.js', 'params.js', 'grid.js', 'fields.js', 'runner.js', 'share.js',
-           'renderer.js', 'gestures.js', 'input.js', 'canvas2d.js', 'blade.js', 'obstacles.js', 'charts.js', 'overlays.js',
-           'compare.js', 'webm.js', 'capture.js', 'ui.js', 'settings.js', 'stage.js', 'readouts.js', 'seam.js', 'app.js']
+# The hand-written page: ES modules in folders by layer, each importing only from its own
+# layer or one listed before it (tests/test_page_layout.py), linked from app.js, the loop
+# and the wiring, which sits above them all.
+LAYERS = ['sim', 'draw', 'input', 'ui']
+PAGE_ENTRY = 'app'
 STYLES = ['style.css']
 # GLSL, inlined as <script type="x-shader/x-vertex|fragment" id="shader-NAME"> for renderer.js.
 SHADERS = ['colour.glsl', 'edge.vert', 'edge.frag', 'cell.vert', 'cell.frag', 'mark.vert', 'mark.frag']
 TEMPLATE = 'index.html'
 
-_IMPORT_NAMED = re.compile(r"^import\s*\{([^}]*)\}\s*from\s*'\./([^']+)\.js';?\s*$")
-_IMPORT_STAR = re.compile(r"^import\s*\*\s*as\s+([\w$]+)\s+from\s*'\./([^']+)\.js';?\s*$")
+_IMPORT_NAMED = re.compile(r"^import\s*\{([^}]*)\}\s*from\s*'(\.\.?/[^']+)\.js';?\s*$")
+_IMPORT_STAR = re.compile(r"^import\s*\*\s*as\s+([\w$]+)\s+from\s*'(\.\.?/[^']+)\.js';?\s*$")
 _EXPORT_DECL = re.compile(r'^export\s+(var|let|const|function\*?|class|async\s+function)\s+([\w$]+)')
 _EXPORT_LIST = re.compile(r'^export\s*\{([^}]*)\}\s*;?\s*$')
 # Transcrypt passes some JS reserved words through as variable names (a Python
@@ -85,6 +89,15 @@ def _split_names(spec):
     return out
 
 
+def resolve(module, spec):
+    """The module an import of `spec` ('./x', '../sim/y') from `module` ('ui/z') names: its
+    path under the linked folder, without '.js' ('x', 'sim/y')."""
+    path = posixpath.normpath(posixpath.join(posixpath.dirname(module), spec))
+    if path.startswith('..'):
+        raise BuildError('%s: import %r reaches outside the linked folder' % (module, spec))
+    return path
+
+
 def parse_module(text, module):
     """Return (deps, prologue lines, body lines, exports [(exported, local)])."""
     deps, prologue, body, exports = [], [], [], []
@@ -97,14 +110,14 @@ def parse_module(text, module):
                              % (module, m.group(1), line.strip()[:120]))
         m = _IMPORT_NAMED.match(line)
         if m:
-            dep = m.group(2)
+            dep = resolve(module, m.group(2))
             deps.append(dep)
             for exported, local in _split_names(m.group(1)):
                 prologue.append('var %s = %s.%s;' % (local, _ident(dep), exported))
             continue
         m = _IMPORT_STAR.match(line)
         if m:
-            dep = m.group(2)
+            dep = resolve(module, m.group(2))
             deps.append(dep)
             prologue.append('var %s = %s;' % (m.group(1), _ident(dep)))
             continue
@@ -128,9 +141,9 @@ def parse_module(text, module):
     return deps, prologue, body, exports
 
 
-def link(js_dir, entry='api'):
-    """Link the ES modules under js_dir, reachable from entry, into one classic
-    script that defines the single global `clothTranscrypt` = {api}."""
+def modules(js_dir, entry):
+    """The ES modules under js_dir reachable from entry, parsed, in dependency order:
+    [(module, (deps, prologue, body, exports))]."""
     parsed = {}
     order = []
 
@@ -139,7 +152,7 @@ def link(js_dir, entry='api'):
             if module in stack:
                 raise BuildError('import cycle: ' + ' -> '.join(stack + [module]))
             return
-        path = os.path.join(js_dir, module + '.js')
+        path = os.path.join(js_dir, *(module + '.js').split('/'))
         if not os.path.exists(path):
             raise BuildError('missing module ' + path)
         with open(path, encoding='utf-8') as f:
@@ -149,20 +162,63 @@ def link(js_dir, entry='api'):
         order.append(module)
 
     visit(entry, [])
+    return [(m, parsed[m]) for m in order]
+
+
+def wrapped(module, parsed, label):
+    """One module as a function scope whose value is its exports."""
+    deps, prologue, body, exports = parsed
+    out = ['// ---- %s ----' % label, 'var %s = (function () {' % _ident(module), "'use strict';"]
+    out.extend(prologue)
+    out.extend(body)
+    out.append('return {%s};' % ', '.join('%s: %s' % (e, local) for e, local in exports))
+    out.append('})();')
+    return out
+
+
+def link(js_dir, entry='api'):
+    """Link the ES modules under js_dir, reachable from entry, into one classic
+    script that defines the single global `clothTranscrypt` = {api}."""
     out = ['// Generated by build.py from cloth/ via Transcrypt: do not edit.',
            'var clothTranscrypt = (function () {']
-    for module in order:
-        deps, prologue, body, exports = parsed[module]
-        out.append('// ---- module %s ----' % module)
-        out.append('var %s = (function () {' % _ident(module))
-        out.append("'use strict';")
-        out.extend(prologue)
-        out.extend(body)
-        fields = ', '.join('%s: %s' % (exported, local) for exported, local in exports)
-        out.append('return {%s};' % fields)
-        out.append('})();')
+    for module, parsed in modules(js_dir, entry):
+        out.extend(wrapped(module, parsed, 'module ' + module))
     # Only the entry point: the page and the benchmark go through cloth/api.py, never past it.
     out.append('return {api: %s};' % _ident(entry))
+    out.append('})();')
+    return '\n'.join(out) + '\n'
+
+
+def page_files():
+    """Every page source under webgl/, as module names ('app', 'sim/core', ...)."""
+    found = []
+    for folder, _, files in os.walk(WEBGL):
+        for name in files:
+            if name.endswith('.js'):
+                rel = os.path.relpath(os.path.join(folder, name), WEBGL)
+                found.append(rel[:-3].replace(os.sep, '/'))
+    return sorted(found)
+
+
+def layer_of(module):
+    """The layer a page module belongs to: its folder (LAYERS), or 'app' at the top."""
+    return module.split('/')[0] if '/' in module else 'app'
+
+
+def link_page():
+    """The page's modules, from webgl/app.js down, as one classic script: no global of its
+    own (the test seam publishes what the tests and the benchmark reach)."""
+    linked = modules(WEBGL, PAGE_ENTRY)
+    names = [m for m, _ in linked]
+    missing = sorted(set(page_files()) - set(names))
+    if missing:
+        raise BuildError('page files that app.js does not reach: %s' % missing)
+    bad = [m for m in names if layer_of(m) not in LAYERS + ['app'] or (layer_of(m) == 'app' and m != PAGE_ENTRY)]
+    if bad:
+        raise BuildError('page files outside the layers %s: %s' % (LAYERS, bad))
+    out = ['(function () {']
+    for module, parsed in linked:
+        out.extend(wrapped(module, parsed, 'webgl/%s.js' % module))
     out.append('})();')
     return '\n'.join(out) + '\n'
 
@@ -183,10 +239,6 @@ def _inline_safe(text, name):
 
 def page(core_js):
     """dist/index.html: the template with styles and scripts inlined."""
-    listed = set(SCRIPTS)
-    present = {n for n in os.listdir(WEBGL) if n.endswith('.js')}
-    if present != listed:
-        raise BuildError('webgl/*.js and build.SCRIPTS differ: %s' % sorted(present ^ listed))
     shader_dir = os.path.join(WEBGL, 'shaders')
     present = set(os.listdir(shader_dir))
     if present != set(SHADERS):
@@ -198,8 +250,7 @@ def page(core_js):
         blocks.append('<script type="%s" id="shader-%s">\n%s</script>' % (
             kind, name, _inline_safe(_read(os.path.join('shaders', name)), name)))
     blocks.append('<script>\n' + _inline_safe(core_js, 'core') + '</script>')
-    for name in SCRIPTS:
-        blocks.append('<script>\n// ---- webgl/%s ----\n%s</script>' % (name, _inline_safe(_read(name), name)))
+    blocks.append('<script>\n' + _inline_safe(link_page(), 'webgl') + '</script>')
     html = _read(TEMPLATE)
     for marker in ('<!-- @style -->', '<!-- @scripts -->'):
         if html.count(marker) != 1:

@@ -1,5 +1,5 @@
 // The benchmark's side in the page (bench/page.py adds this file to dist/index.html and drives
-// it). Every frame it times is stepped by webgl/runner.js, the code the page's loop runs, so
+// it). Every frame it times is stepped by webgl/sim/runner.js, the code the page's loop runs, so
 // what the page shows and what the benchmark reports are stepped and timed alike.
 'use strict';
 

@@ -13,7 +13,7 @@ ARGS = ['--no-sandbox', '--enable-unsafe-swiftshader', '--disable-background-net
         '--disable-component-update', '--disable-sync', '--no-first-run', '--disable-quic',
         '--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE localhost , EXCLUDE 127.0.0.1']
 
-# The benchmark's JS: bench/harness.js, on webgl/runner.js (shipped in the page: the code the
+# The benchmark's JS: bench/harness.js, on webgl/sim/runner.js (shipped in the page: the code the
 # page's compare mode measures with).
 HARNESS = os.path.join(ROOT, 'bench', 'harness.js')
 

@@ -1,45 +1,71 @@
-"""The page's files depend one way (README, "Layout"): each uses only the globals of files
-linked before it, and input turns pointers into gestures without knowing the app."""
+"""The page's modules depend one way (README, "Where to change what"; docs/page.md): folders by
+layer (build.LAYERS: sim, draw, input, ui), each module importing only from its own layer or a
+lower one, app.js (the loop and the wiring) above them all; input turns pointers into gestures
+without knowing the app; no module reads another's window global."""
 
 import os
 import re
 
 import build
-from build import WEBGL
 
 
-def globals_of(name):
-    with open(os.path.join(WEBGL, name), encoding='utf-8') as f:
-        text = f.read()
-    defined = set(re.findall(r'window\.(cloth\w+)\s*=', text))
-    used = set(re.findall(r'window\.(cloth\w+)', text)) - defined
-    return defined, used
+def source(module):
+    with open(os.path.join(build.WEBGL, *(module + '.js').split('/')), encoding='utf-8') as f:
+        return f.read()
 
 
-def test_each_file_uses_only_what_comes_before_it():
-    before = set()
-    for name in build.SCRIPTS:
-        defined, used = globals_of(name)
-        assert used <= before, (name, sorted(used - before))
-        before |= defined
+def code_of(module):
+    """The module's code without its comments (a comment may name anything)."""
+    return '\n'.join(line.split('//')[0] for line in source(module).split('\n'))
 
 
-def test_every_page_file_is_linked():
-    on_disk = {f for f in os.listdir(WEBGL) if f.endswith('.js')}
-    assert on_disk == set(build.SCRIPTS)
+def imports_of(module):
+    return build.parse_module(source(module), module)[0]
 
 
-def test_input_and_gestures_know_no_other_file():
-    for name in ('input.js', 'gestures.js'):
-        assert globals_of(name)[1] == set(), name
-    users = {name for name in build.SCRIPTS
-             if {'clothInput', 'clothGestures'} & globals_of(name)[1]}
-    assert users == {'app.js'}
+def rank(module):
+    return (build.LAYERS + ['app']).index(build.layer_of(module))
+
+
+def test_every_page_file_is_a_module_in_a_layer_and_linked_from_app():
+    linked = [m for m, _ in build.modules(build.WEBGL, build.PAGE_ENTRY)]
+    assert sorted(linked) == build.page_files()
+    assert [m for m in linked if '/' not in m] == [build.PAGE_ENTRY]
+    assert {build.layer_of(m) for m in linked} == set(build.LAYERS) | {'app'}
+
+
+def test_no_import_from_a_lower_layer_to_a_higher_one():
+    up = [(m, d) for m in build.page_files() for d in imports_of(m) if rank(d) > rank(m)]
+    assert up == []
+
+
+def test_the_layering_check_sees_an_import_upward():
+    # The check above on a module that imports from a layer above its own.
+    fake = "import { clothUI } from '../ui/ui.js';\nexport const x = 1;\n"
+    deps = build.parse_module(fake, 'sim/fake')[0]
+    assert deps == ['ui/ui'] and rank(deps[0]) > rank('sim/fake')
+
+
+def test_each_module_uses_what_it_imports_and_reads_no_window_global():
+    for m in build.page_files():
+        code = code_of(m)
+        globals_read = set(re.findall(r'window\.(cloth\w+)', code)) - {'clothApp'}
+        assert globals_read == set(), (m, globals_read)
+        body = '\n'.join(line for line in code.split('\n') if not line.startswith('import '))
+        prologue = build.parse_module(source(m), m)[1]       # 'var local = module.name;'
+        for local in (line.split()[1] for line in prologue):
+            assert re.search(r'\b%s\b' % re.escape(local), body), (m, 'imports but never uses', local)
+
+
+def test_input_and_gestures_know_no_other_module():
+    for m in ('input/input', 'input/gestures'):
+        assert imports_of(m) == [], m
+    users = {m for m in build.page_files() if {'input/input', 'input/gestures'} & set(imports_of(m))}
+    assert users == {'app', 'ui/seam'}     # the seam only publishes them to the tests
 
 
 def test_the_renderer_never_reads_a_cloth():
     """It draws a snapshot (clothCore.snapshot); comments and messages may name the cloth,
     code may not."""
-    with open(os.path.join(WEBGL, 'renderer.js'), encoding='utf-8') as f:
-        code = [re.sub(r"'[^']*'", "''", line.split('//')[0]) for line in f]
+    code = [re.sub(r"'[^']*'", "''", line) for line in code_of('draw/renderer').split('\n')]
     assert not [line for line in code if re.search(r'\bcloth\b', line)]

@@ -22,7 +22,26 @@
 // Panels: a scene with a `compare` list runs once per entry, side by side (stage.js), each
 // panel its own cloth with the entry's settings written in, all under the same hands (the
 // session applies every gesture to each). A scene without one is a single panel.
-'use strict';
+import { clothBlade } from './draw/blade.js';
+import { clothCapture } from './draw/capture.js';
+import { clothCharts } from './draw/charts.js';
+import { clothCompare } from './ui/compare.js';
+import { clothCore } from './sim/core.js';
+import { clothGestures } from './input/gestures.js';
+import { clothInput } from './input/input.js';
+import { clothObstacles } from './draw/obstacles.js';
+import { clothOptions } from './sim/options.js';
+import { clothOverlays } from './draw/overlays.js';
+import { clothParams } from './sim/params.js';
+import { clothReadouts } from './ui/readouts.js';
+import { clothRenderer } from './draw/renderer.js';
+import { clothRunner } from './sim/runner.js';
+import { clothScenes } from './sim/scenes.js';
+import { clothSeam } from './ui/seam.js';
+import { clothSettings } from './ui/settings.js';
+import { clothShare } from './sim/share.js';
+import { clothStage } from './draw/stage.js';
+import { clothUI } from './ui/ui.js';
 
 (function () {
   const MAX_GAP = 0.25;        // seconds of wall clock counted per animation frame at most
@@ -31,11 +50,11 @@
   const READOUT_MS = 250;      // readout refresh period
   const EMA = 0.1;             // smoothing of the sim readout
 
-  const core = window.clothCore, scenes = window.clothScenes, runner = window.clothRunner;
-  const params = window.clothParams, stage = window.clothStage;
+  const core = clothCore, scenes = clothScenes, runner = clothRunner;
+  const params = clothParams, stage = clothStage;
   const canvas = document.getElementById('view');
-  const options = window.clothOptions.parse(window.location.search, scenes.PRESETS);
-  const own = window.clothOptions.own;
+  const options = clothOptions.parse(window.location.search, scenes.PRESETS);
+  const own = clothOptions.own;
 
   // A panel: {cloth, run (runner.js: ops, script index, batch timing), draw (its renderer
   // panel), snap (what the renderer reads of the cloth: clothCore.snapshot), simMs}.
@@ -64,16 +83,16 @@
   // panel and records it; the page never records beside it.
   const session = core.session;
   let sess = null;
-  const share = window.clothShare;
-  const blade = window.clothBlade.create(document.getElementById('blade'));
-  const obstacles = window.clothObstacles.create(document.getElementById('obstacles'));
+  const share = clothShare;
+  const blade = clothBlade.create(document.getElementById('blade'));
+  const obstacles = clothObstacles.create(document.getElementById('obstacles'));
   // Picture and Video: the stage as drawn, the cloth's canvas and the obstacles' over it.
-  const capture = window.clothCapture.create([canvas, document.getElementById('obstacles')],
+  const capture = clothCapture.create([canvas, document.getElementById('obstacles')],
                                              function (blob, name) { share.download(blob, name); },
                                              function (text) { ui.note(text); });
   let bladeOn = false;      // the Cut tool (touch and pen cut with it; a mouse with Alt too)
 
-  const ui = window.clothUI.create({
+  const ui = clothUI.create({
     pause: function () { setPaused(!state.paused); },
     step: function () { setPaused(true); advance(1); sampleCharts(true); },
     reset: function () { reset(); },
@@ -105,14 +124,14 @@
     cutTool: function (on) { setCutTool(on === undefined ? !bladeOn : on); },
   });
 
-  const compareUI = window.clothCompare.create({
+  const compareUI = clothCompare.create({
     change: function (list, note) { setCompare(list, note); },
     note: function (text) { ui.note(text); },
     running: function (i, key) { return i < state.panels.length ? state.panels[i].cloth.scene[key] : null; },
   });
-  const charts = window.clothCharts.create(document.getElementById('charts'));
+  const charts = clothCharts.create(document.getElementById('charts'));
 
-  const renderer = window.clothRenderer.create(canvas, {
+  const renderer = clothRenderer.create(canvas, {
     webgl: options.webgl,
     onLost: function () { ui.error('The WebGL context was lost; waiting for the browser to restore it.', 'context'); },
     onRestored: function () {
@@ -127,7 +146,7 @@
   // ---- scenes -------------------------------------------------------------
 
   // The settings the panel shows, as a cloth has them now; the page's limits on a scene.
-  const paramsOf = window.clothSettings.paramsOf, limitOf = params.limitOf;
+  const paramsOf = clothSettings.paramsOf, limitOf = params.limitOf;
 
   // Load scene JSON text. On a bad scene: show the message, keep the old scene
   // running, and throw an Error with the core's message.
@@ -255,7 +274,7 @@
   function replay() {
     const text = recordingText();
     load(text, state.preset, state.view);
-    ui.note(window.clothReadouts.replayNote(sess.replay_end, ''));
+    ui.note(clothReadouts.replayNote(sess.replay_end, ''));
   }
 
   function exportRecording() {
@@ -411,7 +430,7 @@
     if (session.atReplayEnd(sess)) { state.replaying = false; setPaused(true); }
   }
 
-  const overlays = window.clothOverlays.create(canvas, [document.getElementById('legend'),
+  const overlays = clothOverlays.create(canvas, [document.getElementById('legend'),
     document.getElementById('hud'), document.getElementById('charts')], document.getElementById('overlays'));
   function heldPoints(visit) { return stage.heldPoints(state.panels, visit); }
 
@@ -421,7 +440,7 @@
     if (state.needMeasure) { state.panels.forEach(function (p) { p.run.ops.measure(); }); state.needMeasure = false; }
     const t0 = performance.now();
     const timed = state.timeDraw;
-    state.scale = window.clothReadouts.scaleOf(state.panels, state.mode, state.scaleMode, state.fullScale);
+    state.scale = clothReadouts.scaleOf(state.panels, state.mode, state.scaleMode, state.fullScale);
     renderer.begin();
     for (let i = 0; i < state.panels.length; i++) {
       const p = state.panels[i];
@@ -456,8 +475,8 @@
     ui.setPaused(state.paused);
   }
 
-  const numbers = window.clothReadouts.create(ui, compareUI, runner);
-  const frameTimes = window.clothReadouts.frameClock();
+  const numbers = clothReadouts.create(ui, compareUI, runner);
+  const frameTimes = clothReadouts.frameClock();
   function readouts(now) {
     if (now - state.lastReadout < READOUT_MS || !state.cloth) return;
     state.lastReadout = now;
@@ -520,7 +539,7 @@
   // Pointers (input.js) become gestures (gestures.js) on the views below, and a gesture
   // becomes the actions after them: applied at once through the core, in every panel, then
   // recorded at the current frame by the session. A person acting during a replay takes over.
-  const gestures = window.clothGestures.create({
+  const gestures = clothGestures.create({
     // client px -> {panel, x, y} world metres in the panel under the point (panel -1: none)
     locate: function (clientX, clientY) {
       return renderer.ok ? stage.locate(canvas, state.panels, clientX, clientY) : { panel: -1, x: NaN, y: NaN };
@@ -566,10 +585,10 @@
     cut: function (x0, y0, x1, y1) { if (session.cut(sess, x0, y0, x1, y1)) acted(); },
     obstacle: function (j, x, y) { if (session.obstacle(sess, j, x, y)) acted(); },
   });
-  window.clothInput.attach(canvas, gestures);
+  clothInput.attach(canvas, gestures);
 
   // The panel's settings (settings.js): a `set` through the session, or a new grid.
-  const settings = window.clothSettings.create({
+  const settings = clothSettings.create({
     state: state, sess: function () { return sess; }, load: load, acted: acted, ui: ui, gestures: gestures,
     followed: function (list) { state.compare = list; compareUI.render(list); },
     // Reset restarts with the new settings.
@@ -603,10 +622,10 @@
 
   // ---- test seam ----------------------------------------------------------
 
-  window.clothSeam.publish({
+  clothSeam.publish({
     state: function () { return state; }, sess: function () { return sess; }, canvas: canvas,
     renderer: renderer, charts: charts, ui: ui, runner: runner, session: session,
-    bladeOn: function () { return bladeOn; }, allAsleep: allAsleep, autoFloor: window.clothReadouts.AUTO_FLOOR, render: render,
+    bladeOn: function () { return bladeOn; }, allAsleep: allAsleep, autoFloor: clothReadouts.AUTO_FLOOR, render: render,
     setPaused: setPaused, advance: advance, recordingText: recordingText, link: link, replay: replay,
     exportRecording: exportRecording, setCompare: setCompare, setColorMode: setColorMode,
     loadScene: loadScene, setScaleMode: setScaleMode, setFullScale: setFullScale, usePreset: usePreset,
@@ -643,7 +662,7 @@
     state.linkPending = true;
     linked.then(function (text) {
       load(text, 'custom', null);
-      ui.note(window.clothReadouts.replayNote(sess.replay_end, 'the link'));
+      ui.note(clothReadouts.replayNote(sess.replay_end, 'the link'));
     }).catch(function (e) {
       const shown = own(scenes.PRESETS, state.preset)
         ? 'showing the ' + scenes.PRESETS[state.preset].label + ' preset' : 'the scene shown runs on';

@@ -1,5 +1,5 @@
 """The timing readouts say what a person's frames do (issue #41): `fps` is frames counted over
-time (1 / the mean gap over the last second, webgl/readouts.js frameClock), and `render` is a
+time (1 / the mean gap over the last second, webgl/ui/readouts.js frameClock), and `render` is a
 drawing timed until WebGL's finish() returns, so on a slow scene the two account for the frames'
 time instead of reading 4-9x the real rate and a fraction of a millisecond."""
 import json

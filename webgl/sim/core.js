@@ -1,12 +1,11 @@
-// The core's public face in the page: window.clothCore.
+// The core's public face in the page: clothCore.
 //
 // `clothTranscrypt.api` is the transpiled cloth/api.py (linked by build.py).
 // Transcrypt exceptions are not JS Error instances (the message sits in
 // e.__args__[0]), so every entry point turns them into a plain Error carrying
 // the same one-line message the CLI prints.
-'use strict';
 
-window.clothCore = (function (api) {
+export const clothCore = (function (api) {
   function message(e) {
     if (e instanceof Error) return e.message;
     if (e && e.__args__ && e.__args__.length > 0) return String(e.__args__[0]);

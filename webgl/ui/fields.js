@@ -4,10 +4,10 @@
 // reports letters as empty. The page reads the text once, with scenes.js readNumber, and
 // says what it did. ArrowUp and ArrowDown step by the field's step, within its range; from an empty field, from
 // what it stands for (a key whose 0 means none steps up from none to its least value).
-'use strict';
+import { clothScenes } from '../sim/scenes.js';
 
-window.clothFields = (function () {
-  const LIMITS = window.clothScenes.LIMITS;
+export const clothFields = (function () {
+  const LIMITS = clothScenes.LIMITS;
 
   // What a field for LIMITS[key] is called: the key's label and unit (cloth/scene.py KEYS).
   function caption(key) {
@@ -35,7 +35,7 @@ window.clothFields = (function () {
     input.addEventListener('keydown', function (e) {
       if (e.key !== 'ArrowUp' && e.key !== 'ArrowDown') return;
       const text = input.value.trim().toLowerCase(), up = e.key === 'ArrowUp';
-      let from = window.clothScenes.readNumber(input.value).value;
+      let from = clothScenes.readNumber(input.value).value;
       if (from === null && (text === '' || (lim.off && text === 'off'))) {
         from = emptyValue ? emptyValue() : (lim.off ? 0 : null);
       }

@@ -3,9 +3,9 @@
 // current values. Samples go into ring buffers (typed arrays made once), one sample every
 // SAMPLE_MS of wall clock while the simulation runs; drawing only strokes paths, so neither
 // allocates per frame.
-'use strict';
+import { clothCanvas2d } from './canvas2d.js';
 
-window.clothCharts = (function () {
+export const clothCharts = (function () {
   const WINDOW = 20;                  // seconds shown
   const SAMPLE_MS = 100;              // one sample per 100 ms
   const N = Math.round(WINDOW * 1000 / SAMPLE_MS);
@@ -117,7 +117,7 @@ window.clothCharts = (function () {
 
     function draw() {
       if (!ctx) return;
-      const box = window.clothCanvas2d.fit(canvas, ctx);
+      const box = clothCanvas2d.fit(canvas, ctx);
       const cssW = box.w, cssH = box.h;
       ctx.clearRect(0, 0, cssW, cssH);
       written.length = 0;

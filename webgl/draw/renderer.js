@@ -26,9 +26,8 @@
 //           so brightness grows linearly with |diff| and an unstrained edge stays visible;
 //   stress: value = node Q at each end, colour = mix(blue, red, t): the gradient
 //           between the two nodes' colours comes from interpolating Q along the edge.
-'use strict';
 
-window.clothRenderer = (function () {
+export const clothRenderer = (function () {
   const STRAIN_BASE = 0.3;          // red level of an unstrained edge
   const BACKGROUND = [0.075, 0.082, 0.098];
   const EDGE_HALF_WIDTH_CSS = 0.75; // half the edge width, CSS pixels (dense grids: thinner)

@@ -4,9 +4,9 @@
 // are drawn into one 2D canvas of the WebGL canvas's device size, for a picture once, for a
 // video after every drawing while it records (nothing is copied otherwise). Files are saved
 // through share.js; everything works offline from file://.
-'use strict';
+import { clothWebm } from './webm.js';
 
-window.clothCapture = (function () {
+export const clothCapture = (function () {
   // The formats tried, best first: what MediaRecorder.isTypeSupported says yes to.
   const VIDEO_TYPES = ['video/webm;codecs=vp9', 'video/webm;codecs=vp8', 'video/webm',
                        'video/mp4;codecs=avc1', 'video/mp4'];
@@ -97,7 +97,7 @@ window.clothCapture = (function () {
         // A WebM gets its duration written into its header: without it players cannot seek.
         if (v.type.indexOf('webm') < 0) { said(blob, ''); return; }
         blob.arrayBuffer().then(function (buf) {
-          const done = window.clothWebm.withDuration(new Uint8Array(buf), ms);
+          const done = clothWebm.withDuration(new Uint8Array(buf), ms);
           said(done.why ? blob : new Blob([done.bytes], { type: blob.type }), done.why);
         }).catch(function (e) { said(blob, String(e && e.message || e)); });
       };

@@ -1,9 +1,9 @@
 // The blade's trail: where a cutting stroke went in the last TRAIL_MS, drawn fading on a 2D
 // canvas over the stage. Points go into a ring buffer made once (x, y in CSS px of the stage,
 // the time, and NaN where a stroke starts), so neither a stroke nor its drawing allocates.
-'use strict';
+import { clothCanvas2d } from './canvas2d.js';
 
-window.clothBlade = (function () {
+export const clothBlade = (function () {
   const TRAIL_MS = 450;
   const N = 256;                 // points kept (a stroke's last ones)
 
@@ -33,7 +33,7 @@ window.clothBlade = (function () {
         live = now - pts[3 * i + 2] < TRAIL_MS;
       }
       if (!live && !shown) return false;
-      const box = window.clothCanvas2d.fit(canvas, ctx);
+      const box = clothCanvas2d.fit(canvas, ctx);
       ctx.clearRect(0, 0, box.w, box.h);
       shown = live;
       if (!live) return false;

@@ -3,9 +3,8 @@
 // the pins a person set or removed (edits: vertex -> pinned, kept over any number of grid
 // changes) are written over the new scene's pins; a hand's vertex moves with it. What falls
 // outside the new grid is dropped and named. Pure: data in, data out.
-'use strict';
 
-window.clothGrid = (function () {
+export const clothGrid = (function () {
   // oldCols: the grid's columns now; cols, rows: the new grid's.
   function mover(oldCols, cols, rows) {
     return {

@@ -2,9 +2,8 @@
 // value checked against the values it can take. An unknown option or value is
 // never silently ignored: it comes back as a note, and the option keeps its default.
 // Lookups go through own properties only, so `?preset=toString` is just unknown.
-'use strict';
 
-window.clothOptions = (function () {
+export const clothOptions = (function () {
   function own(obj, key) { return Object.prototype.hasOwnProperty.call(obj, key); }
 
   const FLAGS = { '1': true, 'true': true, 'yes': true, '0': false, 'false': false, 'no': false };

@@ -3,9 +3,8 @@
 // them), so players show no length and cannot seek. withDuration() adds the Duration element
 // to the Segment's Info (EBML: Matroska's element tree, ids and sizes as variable-length
 // integers), nothing else changed.
-'use strict';
 
-window.clothWebm = (function () {
+export const clothWebm = (function () {
   const EBML = 0x1A45DFA3, SEGMENT = 0x18538067, INFO = 0x1549A966, SEEK_HEAD = 0x114D9B74;
   const DURATION = 0x4489, TIMECODE_SCALE = 0x2AD7B1;
   const DEFAULT_SCALE = 1e6;    // ns per tick when the Info says none (Matroska's default)

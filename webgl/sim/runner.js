@@ -7,10 +7,11 @@
 // the index of its scene's next scripted action, the frames it has run, and the time and
 // sweeps of its last batch. A batch is timed as a whole with
 // performance.now() (its resolution is 100 us on file://; per-frame timings would be noise).
-'use strict';
+import { clothCore } from './core.js';
+import { clothScenes } from './scenes.js';
 
-window.clothRunner = (function () {
-  const core = window.clothCore;
+export const clothRunner = (function () {
+  const core = clothCore;
 
   function run(cloth) {
     const r = { cloth: cloth, ops: core.ops(cloth), next: 0, frame: 0, ms: 0, proj: 0 };
@@ -87,7 +88,7 @@ window.clothRunner = (function () {
     const d = describe(cl);
     const parts = [headline(cl)];
     if (cl.scene.solver !== core.schema().seedSolver) {
-      const name = window.clothScenes ? window.clothScenes.materialOf(d.stretch, d.shear, d.density) : 'custom';
+      const name = clothScenes ? clothScenes.materialOf(d.stretch, d.shear, d.density) : 'custom';
       parts.push(name !== 'custom' ? name : d.stretch + '/' + d.shear + ' N/m ' + d.density + ' kg/m\u00b2');
     }
     if (d.tear > 0) parts.push('tear ' + d.tear);

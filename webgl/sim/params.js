@@ -2,11 +2,13 @@
 // SCENE_FIELDS, and the solver and fabric): read from a cloth's scene, written into a
 // scene object, and the scene keys a change of them sets; and the page's limits for a scene
 // and its panels. Pure: data in, data out (the app applies them through the session).
-'use strict';
+import { clothCore } from './core.js';
+import { clothOptions } from './options.js';
+import { clothScenes } from './scenes.js';
 
-window.clothParams = (function () {
-  const scenes = window.clothScenes, own = window.clothOptions.own;
-  const KEYS = window.clothCore.schema().keys;
+export const clothParams = (function () {
+  const scenes = clothScenes, own = clothOptions.own;
+  const KEYS = clothCore.schema().keys;
 
   // The params as a cloth's scene has them now (the scene it runs, settings set live included).
   function of(scene) {

@@ -1,8 +1,7 @@
 // A 2D canvas over the stage (the live charts, the blade's trail): its drawing buffer sized to
 // its CSS box times devicePixelRatio, so lines stay sharp, and a context that draws in CSS px.
-'use strict';
 
-window.clothCanvas2d = (function () {
+export const clothCanvas2d = (function () {
   // Size canvas for its box now; returns {ctx, w, h} (CSS px), the transform set for them.
   function fit(canvas, ctx) {
     const r = canvas.getBoundingClientRect();

@@ -4,21 +4,24 @@
 // A comparison is the scene's `compare` list (cloth/scene.py): 2 to 4 objects of scene keys,
 // one per panel, each written into the scene for that panel. The same hands act on every
 // panel (app.js), so the panels differ only by these settings.
-'use strict';
+import { clothCharts } from '../draw/charts.js';
+import { clothCore } from '../sim/core.js';
+import { clothFields } from './fields.js';
+import { clothScenes } from '../sim/scenes.js';
 
-window.clothCompare = (function () {
-  const SCHEMA = window.clothCore.schema();
+export const clothCompare = (function () {
+  const SCHEMA = clothCore.schema();
   const MAX_PANELS = SCHEMA.maxPanels;      // cloth/scene.py MAX_PANELS
   // The one-click pair: the seed's method against the default, each spelled out so that a
   // scene that set its own solver does not make them the same.
   const SEED_VS_DEFAULT = [SCHEMA.seedSolver, SCHEMA.defaultSolver].map(function (name) {
-    const d = window.clothScenes.SOLVERS[name];
+    const d = clothScenes.SOLVERS[name];
     return { solver: name, substeps: d.substeps, iterations: d.iterations };
   });
   // The editor's fields: every key a panel may have of its own (cloth/scene.py Keys with a
   // `panel`: 2 shown at once, 1 under "more"), the choices first. Number fields take their
   // ranges, labels and the reading of what is typed from the panel's (scenes.js LIMITS).
-  const LIMITS = window.clothScenes.LIMITS;
+  const LIMITS = clothScenes.LIMITS;
   function isChoice(key) { const k = SCHEMA.keys[key].kind; return k === 'choice' || k === 'bool'; }
   function panelKeys(level) {
     const keys = SCHEMA.order.filter(function (key) { return SCHEMA.keys[key].panel === level; });
@@ -32,7 +35,7 @@ window.clothCompare = (function () {
     const own = ['', k.bySolver ? 'solver\'s' : 'scene\'s'];
     if (key === 'solver') {
       return [own].concat(SCHEMA.solvers.map(function (name) {
-        return [name, window.clothScenes.SOLVERS[name].label];
+        return [name, clothScenes.SOLVERS[name].label];
       }));
     }
     return [own, ['true', 'on'], ['false', 'off']];
@@ -70,7 +73,7 @@ window.clothCompare = (function () {
       }
       const text = String(raw).trim();
       if (text === '') { delete next[i][key]; h.change(next); return; }
-      const c = window.clothScenes.clamp(key, text);
+      const c = clothScenes.clamp(key, text);
       const note = c.note ? 'Panel ' + (i + 1) + ' ' + c.note : '';
       if (c.value === null) {
         h.note(note);
@@ -87,14 +90,14 @@ window.clothCompare = (function () {
       const input = document.createElement('input');
       // Empty means "the scene's" (clothFields: text fields, read one way).
       // An arrow key in an empty field steps from what the panel runs.
-      window.clothFields.attach(input, key, function (text) { edit(i, key, text); },
+      clothFields.attach(input, key, function (text) { edit(i, key, text); },
                                 function () { return h.running(i, key); });
       input.placeholder = 'scene';
       input.value = value === undefined ? '' : String(value);
       input.setAttribute('aria-label', 'Panel ' + (i + 1) + ' ' + f.label);
       input.dataset.key = key;
       const label = document.createElement('label');
-      label.textContent = window.clothFields.caption(key) + ' ';
+      label.textContent = clothFields.caption(key) + ' ';
       label.appendChild(input);
       return label;
     }
@@ -135,7 +138,7 @@ window.clothCompare = (function () {
       current.forEach(function (o, i) {
         const box = document.createElement('div');
         box.className = 'compare-panel';
-        box.style.borderLeftColor = window.clothCharts.COLORS[i];
+        box.style.borderLeftColor = clothCharts.COLORS[i];
         const head = document.createElement('div');
         head.className = 'compare-head';
         const name = document.createElement('b');
@@ -188,7 +191,7 @@ window.clothCompare = (function () {
         el.style.left = (r.x + 6) + 'px';      // the canvas fills the stage from its corner
         el.style.top = (r.y + 6) + 'px';
         el.firstChild.style.maxWidth = Math.max(60, r.w - 30) + 'px';  // 12 of margins, 18 of padding and border
-        el.style.borderLeftColor = window.clothCharts.COLORS[i];
+        el.style.borderLeftColor = clothCharts.COLORS[i];
       }
     }
 

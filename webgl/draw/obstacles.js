@@ -3,9 +3,9 @@
 // sizes, centres). A vertex is never inside one, so the fill hides no cloth; an edge that
 // crosses a shape narrower than the spacing shows through it. Nothing is drawn, or cleared
 // again, in a scene without obstacles.
-'use strict';
+import { clothCanvas2d } from './canvas2d.js';
 
-window.clothObstacles = (function () {
+export const clothObstacles = (function () {
   const FILL = 'rgba(150, 160, 175, 0.55)';
   const LINE = 'rgba(225, 232, 240, 0.9)';
   const HELD = 'rgba(120, 230, 255, 0.95)';
@@ -21,7 +21,7 @@ window.clothObstacles = (function () {
       let any = false;
       for (let i = 0; i < panels.length; i++) if (panels[i].snap.n_obstacles > 0) any = true;
       if (!any && !shown) return;
-      const box = window.clothCanvas2d.fit(canvas, ctx);
+      const box = clothCanvas2d.fit(canvas, ctx);
       ctx.clearRect(0, 0, box.w, box.h);
       shown = any;
       for (let i = 0; i < panels.length; i++) {

@@ -1,12 +1,14 @@
 // The HTML controls: buttons, inputs, readouts, legend, notes, errors, help and
 // keyboard shortcuts. Holds no simulation state: it calls the app's handlers and
 // shows what the app tells it.
-'use strict';
+import { clothCore } from '../sim/core.js';
+import { clothFields } from './fields.js';
+import { clothScenes } from '../sim/scenes.js';
 
-window.clothUI = (function () {
-  // Keys 1, 2, ... pick the presets in their order (webgl/scenes.js PRESETS).
+export const clothUI = (function () {
+  // Keys 1, 2, ... pick the presets in their order (sim/scenes.js PRESETS).
   const PRESET_KEYS = {};
-  Object.keys(window.clothScenes.PRESETS).forEach(function (name, i) { PRESET_KEYS[String(i + 1)] = name; });
+  Object.keys(clothScenes.PRESETS).forEach(function (name, i) { PRESET_KEYS[String(i + 1)] = name; });
   const ACTION_KEYS = { p: 'replay', e: 'exportFile', l: 'copyLink' };
 
   function $(id) { return document.getElementById(id); }
@@ -70,9 +72,9 @@ window.clothUI = (function () {
     };
     // The Scene section's number fields, made from the core's list (cloth/scene.py
     // SCENE_FIELDS) before the Blade's box: captioned, ranged and read by fields.js.
-    const LIMITS = window.clothScenes.LIMITS;
-    const fieldKeys = window.clothScenes.SCENE_FIELDS;
-    window.clothCore.schema().sceneFields.forEach(function (f) {
+    const LIMITS = clothScenes.LIMITS;
+    const fieldKeys = clothScenes.SCENE_FIELDS;
+    clothCore.schema().sceneFields.forEach(function (f) {
       const label = document.createElement('label'), input = document.createElement('input');
       input.id = f.key;
       if (LIMITS[f.key].off) input.placeholder = 'off';
@@ -110,10 +112,10 @@ window.clothUI = (function () {
       select.appendChild(o);
       return o;
     }
-    const PRESETS = window.clothScenes.PRESETS;
+    const PRESETS = clothScenes.PRESETS;
     Object.keys(PRESETS).forEach(function (name) { option(el.preset, name, PRESETS[name].label); });
     option(el.preset, 'custom', 'Custom (JSON)').disabled = true;
-    const SCHEMA = window.clothCore.schema(), SOLVERS = window.clothScenes.SOLVERS;
+    const SCHEMA = clothCore.schema(), SOLVERS = clothScenes.SOLVERS;
     SCHEMA.solvers.forEach(function (name) {
       const d = SOLVERS[name], chosen = name === SCHEMA.defaultSolver;
       option($('solver'), name, d.label,
@@ -125,13 +127,13 @@ window.clothUI = (function () {
     const names = Object.keys(PRESETS).map(function (n) { return PRESETS[n].label.toLowerCase(); });
     const facts = {
       defaultSubsteps: SOLVERS[SCHEMA.defaultSolver].substeps, seedIterations: SOLVERS[SCHEMA.seedSolver].iterations,
-      presetFabric: window.clothScenes.MATERIALS[window.clothCore.fabrics().preset].label.toLowerCase(),
+      presetFabric: clothScenes.MATERIALS[clothCore.fabrics().preset].label.toLowerCase(),
       handForce: SCHEMA.handForce, handRadius: 100 * SCHEMA.handRadius, presetCount: names.length, presetNames: names.join(', '), maxPanels: SCHEMA.maxPanels,
     };
     document.querySelectorAll('[data-fact]').forEach(function (node) { node.textContent = String(facts[node.dataset.fact]); });
     $('solver').addEventListener('change', function () { h.solver($('solver').value); });
     // The Material menu and its help rows, from the core's list of fabrics.
-    const fabrics = window.clothScenes.MATERIALS;
+    const fabrics = clothScenes.MATERIALS;
     Object.keys(fabrics).forEach(function (name) {
       const m = fabrics[name];
       const o = document.createElement('option');
@@ -156,7 +158,7 @@ window.clothUI = (function () {
     $('material').appendChild(custom);
     $('material').addEventListener('change', function () { h.material($('material').value); });
     fieldKeys.forEach(function (key) {
-      window.clothFields.attach($(key), key, function (text) { h.param(key, text); });
+      clothFields.attach($(key), key, function (text) { h.param(key, text); });
     });
     document.querySelectorAll('input[name=mode]').forEach(function (r) {
       r.addEventListener('change', function () { if (r.checked) h.mode(r.value); });
@@ -164,13 +166,13 @@ window.clothUI = (function () {
     document.querySelectorAll('input[name=scale]').forEach(function (r) {
       r.addEventListener('change', function () { if (r.checked) h.scaleMode(r.value); });
     });
-    window.clothFields.attach(el.fullScale, 'fullScale', function (text) { h.fullScale(text); });
+    clothFields.attach(el.fullScale, 'fullScale', function (text) { h.fullScale(text); });
     // The Scene JSON box never holds more than BOX_SHOWN characters: a textarea lays out all
     // of its text, and 17 MB pasted blocked the page for 8 s before Load could refuse it. A
     // longer text is held aside, unshown, and Load reads it; one past the scene limit is
     // refused as it is pasted or dropped, from its length (every character is a byte or more
     // in UTF-8), before anything reads it.
-    const limit = window.clothCore.sceneLimit();
+    const limit = clothCore.sceneLimit();
     const boxHint = el.json.placeholder;
     let heldText = null;
     function hold(text, what) {

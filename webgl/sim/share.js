@@ -9,13 +9,13 @@
 // Bytes are decoded as the CLI decodes them (cloth/__main__.py): strict UTF-8, a leading
 // byte-order mark skipped, and text that is not UTF-8 is refused with the CLI's message,
 // naming the same offset.
-'use strict';
+import { clothCore } from './core.js';
 
-window.clothShare = (function () {
+export const clothShare = (function () {
   const MAX_LINK = 262144;
   // The most bytes a scene may have, however it comes in (cloth/scene.py MAX_SCENE_BYTES),
   // counted while it is read or inflated: a decompression bomb stops at the limit.
-  const limit = window.clothCore.sceneLimit();
+  const limit = clothCore.sceneLimit();
   const MAX_BYTES = limit.bytes;
   function tooLarge() {
     const e = new Error(limit.message);

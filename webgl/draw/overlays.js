@@ -1,9 +1,8 @@
 // The overlays over the canvas (the legend, the readouts, the charts): the band at the
 // stage's foot that they take, and fading one out while a held vertex or its hand is under it.
 // Boxes are measured on a resize and with each readout, never per frame.
-'use strict';
 
-window.clothOverlays = (function () {
+export const clothOverlays = (function () {
   const PAD = 24;   // CSS px: a finger's width around a held vertex
   // The most of the canvas's height the overlays' band takes from the views: a phone's stage
   // (384 px at 360x640) needs 43% for the readouts and a legend note on two lines.

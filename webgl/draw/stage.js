@@ -1,9 +1,8 @@
 // The stage: the panels' rectangles in the canvas, the panel and the world point under a
 // pointer, the held vertices' places on the canvas, and the canvas's size as the browser
 // reports it. Geometry only: the app decides what a new size redraws.
-'use strict';
 
-window.clothStage = (function () {
+export const clothStage = (function () {
   const LABEL_HEIGHT = 44;    // CSS px: a panel label's two lines, its padding and offset
   const GAP = 4;              // CSS px between panels
 

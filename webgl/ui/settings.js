@@ -2,11 +2,15 @@
 // the session as a `set` (every panel, recorded); Columns and Rows make a new grid (grid.js)
 // and load it. Compare mode follows what the panels run. Reads the app's state; changes it
 // only through the app's own functions (followed, retuned, load).
-'use strict';
+import { clothCore } from '../sim/core.js';
+import { clothGrid } from '../sim/grid.js';
+import { clothOptions } from '../sim/options.js';
+import { clothParams } from '../sim/params.js';
+import { clothScenes } from '../sim/scenes.js';
 
-window.clothSettings = (function () {
-  const scenes = window.clothScenes, params = window.clothParams, core = window.clothCore;
-  const session = core.session, own = window.clothOptions.own;
+export const clothSettings = (function () {
+  const scenes = clothScenes, params = clothParams, core = clothCore;
+  const session = core.session, own = clothOptions.own;
   const limitOf = params.limitOf, withSettings = params.written, KEYS = core.schema().keys;
 
   function paramsOf(cloth) { return params.of(cloth.scene); }
@@ -90,7 +94,7 @@ window.clothSettings = (function () {
     // removed are written over the new scene's, and the vertices a hand holds held again. What
     // falls outside the new grid is dropped, and the note says so.
     function regrid(p, note) {
-      const m = window.clothGrid.mover(state.cloth.cols, p.cols, p.rows);
+      const m = clothGrid.mover(state.cloth.cols, p.cols, p.rows);
       const dropped = [];
       let obj, view, preset = state.preset;
       if (preset !== 'custom') {
@@ -98,11 +102,11 @@ window.clothSettings = (function () {
         obj = made.scene; view = made.view;
         if (state.compare.length) obj.compare = state.compare;
       } else {
-        obj = window.clothGrid.moveScene(withSettings(state.sceneObj, p), state.cloth.scene.pins, m, p.cols, p.rows, dropped);
+        obj = clothGrid.moveScene(withSettings(state.sceneObj, p), state.cloth.scene.pins, m, p.cols, p.rows, dropped);
         if (state.compare.length) obj.compare = state.compare;   // as the panels run (followSets)
         view = scenes.viewFor(obj);
       }
-      const edits = window.clothGrid.applyEdits(obj, state.pinEdits, m, dropped);
+      const edits = clothGrid.applyEdits(obj, state.pinEdits, m, dropped);
       const holds = app.gestures.held().map(function (h) { return { k: m.moved(h.k), was: h.k, id: h.id }; });
       try {
         app.load(JSON.stringify(obj), preset, view, holds, edits);
@@ -111,7 +115,7 @@ window.clothSettings = (function () {
         return;
       }
       holds.forEach(function (h) { if (h.k < 0) dropped.push('the held vertex at ' + m.place(h.was)); });
-      const notes = [note, state.loadNote, window.clothGrid.droppedNote(dropped, p.cols, p.rows)];
+      const notes = [note, state.loadNote, clothGrid.droppedNote(dropped, p.cols, p.rows)];
       ui.note(notes.filter(function (t) { return !!t; }).join('; '));
     }
 

@@ -2,9 +2,11 @@
 // colours are, of which fabric, and how well the solver has balanced its forces), the readouts
 // under the cloth and the compare panels' labels. Reads the app's state (its panels' measures
 // and timings); writes only through the UI.
-'use strict';
+import { clothCore } from '../sim/core.js';
+import { clothScenes } from '../sim/scenes.js';
+import { clothUI } from './ui.js';
 
-window.clothReadouts = (function () {
+export const clothReadouts = (function () {
   // Auto: in the stress mode the seed's normalisation by the frame's maximum; in the strain
   // mode the value 99% of the edges are at or below (cloth/measure.py HIGH_SHARE: where a clamp
   // ends the strain peaks more the finer the grid, and a scale by the largest would darken the
@@ -39,10 +41,10 @@ window.clothReadouts = (function () {
   // (cloth/sleep.py SLEEP_IMBALANCE), the colours are the fabric's strain field (the field
   // then matches the exact statics within a few per cent: `python -m bench`).
   function legendOf(cloth, mode) {
-    const core = window.clothCore, seed = cloth.scene.solver === core.schema().seedSolver;
+    const core = clothCore, seed = cloth.scene.solver === core.schema().seedSolver;
     const what = mode === 'stress' ? 'node stress Q' : seed ? 'edge |diff|' : 'tension strain';
     if (seed) return { name: what, note: 'the seed\'s rigid edges' };
-    const s = window.clothScenes, name = s.materialOf(cloth.scene.stretch, cloth.scene.shear, cloth.scene.density);
+    const s = clothScenes, name = s.materialOf(cloth.scene.stretch, cloth.scene.shear, cloth.scene.density);
     const fabric = name === 'custom' ? cloth.scene.stretch + ' N/m' : s.MATERIALS[name].label.split(' (')[0].toLowerCase();
     const off = cloth.imbalance;
     const balance = !(off > 0) ? 'balanced' : off <= core.schema().restImbalance ? 'balanced to ' + fmtPct(off)
@@ -91,9 +93,9 @@ window.clothReadouts = (function () {
       '); a gesture takes over';
   }
 
-  function fmtPct(v) { return window.clothUI.fmt(100 * v, 2) + '%'; }
+  function fmtPct(v) { return clothUI.fmt(100 * v, 2) + '%'; }
 
-  function fmt(v) { return window.clothUI.fmt(v, 4); }
+  function fmt(v) { return clothUI.fmt(v, 4); }
 
   function create(ui, compareUI, runner) {
     ui.setAutoFloor(AUTO_FLOOR);

@@ -7,15 +7,16 @@
 // fabric) into the scene JSON the core reads, so a preset and a hand-written scene go through
 // the same session.open(). View hints live beside the scene, never in it: the core rejects
 // keys it does not know.
-'use strict';
+import { clothCore } from './core.js';
+import { clothOptions } from './options.js';
 
-window.clothScenes = (function () {
-  const own = window.clothOptions.own;
+export const clothScenes = (function () {
+  const own = clothOptions.own;
   // The scene's keys, declared once in the core (cloth/scene.py KEYS): each field's label,
   // unit and the range a person may type (the page's, within the core's own). Anything
   // outside is clamped with a visible note. `off`: the key's 0 means none (tearing, a
   // density), so an empty field or `off` is 0 too.
-  const SCHEMA = window.clothCore.schema();
+  const SCHEMA = clothCore.schema();
   const LIMITS = {};
   SCHEMA.order.forEach(function (key) {
     const k = SCHEMA.keys[key], f = k.field;
@@ -60,7 +61,7 @@ window.clothScenes = (function () {
   // The Material control's fabrics (cloth/fabrics.py FABRICS): name -> {label, stretch N/m,
   // shear N/m, density kg/m^2, what}. The presets hang in the core's preset fabric.
   const MATERIALS = {};
-  const fabrics = window.clothCore.fabrics();
+  const fabrics = clothCore.fabrics();
   fabrics.list.forEach(function (f) {
     MATERIALS[f[0]] = { label: f[1], stretch: f[2], shear: f[3], density: f[4], what: f[5] };
   });
@@ -137,7 +138,7 @@ window.clothScenes = (function () {
   // The presets (cloth/presets.py, in menu order): name -> {label, params: {cols, rows}}.
   // Their scenes are the core's, a function of the grid (make).
   const PRESETS = {};
-  window.clothCore.presets().forEach(function (p) {
+  clothCore.presets().forEach(function (p) {
     PRESETS[p[0]] = { label: p[1], params: { cols: p[2], rows: p[3] } };
   });
 
@@ -146,7 +147,7 @@ window.clothScenes = (function () {
   function defaults(name) {
     if (!own(PRESETS, name)) throw new Error('unknown preset: ' + name);
     const p = Object.assign({}, DEFAULT_PARAMS, PRESETS[name].params);
-    const obj = window.clothCore.preset(name, p.cols, p.rows).scene;
+    const obj = clothCore.preset(name, p.cols, p.rows).scene;
     SCENE_FIELDS.forEach(function (key) {
       if (!SCHEMA.keys[key].live || !own(obj, key)) return;
       p[key] = pair(key) ? obj[key][AXIS[key]] : (obj[key] === null ? 0 : obj[key]);
@@ -159,7 +160,7 @@ window.clothScenes = (function () {
   function make(name, params) {
     if (!own(PRESETS, name)) throw new Error('unknown preset: ' + name);
     const p = Object.assign({}, defaults(name), params || {});
-    const made = window.clothCore.preset(name, p.cols, p.rows);
+    const made = clothCore.preset(name, p.cols, p.rows);
     const scene = writeParams(made.scene, p);
     const view = made.view.length === 4 ? { x0: made.view[0], x1: made.view[1], y0: made.view[2], y1: made.view[3] }
       : viewFor(scene);
@@ -215,7 +216,7 @@ window.clothScenes = (function () {
     function budget(key) {
       return Number.isFinite(scene[key]) ? Math.max(scene[key], 0) : SCHEMA.keys[key].bySolver[index];
     }
-    const edges = window.clothCore.edgesOf(cols, rows);
+    const edges = clothCore.edgesOf(cols, rows);
     const substeps = budget('substeps'), iterations = budget('iterations');
     if (solver === SCHEMA.seedSolver) return substeps * iterations * edges[0];
     if (solver === SCHEMA.defaultSolver) return substeps * (2 * iterations + 8 * budget('corrections')) * edges[1];

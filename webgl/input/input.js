@@ -7,9 +7,8 @@
 // Shift+click, or a double-tap with a finger or pen on the same vertex toggles a pin.
 // The canvas has CSS `touch-action: none`, otherwise the browser claims a touch for scrolling
 // and sends pointercancel on the first move.
-'use strict';
 
-window.clothInput = (function () {
+export const clothInput = (function () {
   // How close (CSS pixels) a press must be to a vertex to grab it.
   const PICK_RADIUS = { mouse: 18, pen: 22, touch: 30 };
   const DOUBLE_TAP_MS = 350;

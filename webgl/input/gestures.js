@@ -10,9 +10,8 @@
 // Through a resize of the view the held vertex stays at the same place under the pointer.
 // A press inside an obstacle takes the obstacle instead: it keeps its offset from the pointer,
 // and the app sends it there (an `obstacle` action) in every panel.
-'use strict';
 
-window.clothGestures = (function () {
+export const clothGestures = (function () {
   // view: {locate(clientX, clientY) -> {panel, x, y} (the panel under the point, -1 for none,
   //        and world metres there), toWorld(panel, clientX, clientY) -> [x, y],
   //        pick(panel, x, y, radiusCss) -> k, positionOf(panel, k) -> [x, y], isHeld(k),

@@ -1,9 +1,23 @@
 // The test seam: window.clothApp, what the tests and the console drive the page by. It reads
 // the app's state through the handle app.js publishes and acts only through the app's own
 // functions (the same a person's controls call), so what a test sees is what the page does.
-'use strict';
+// Besides it, the modules the tests and the benchmark call directly (bench/harness.js steps
+// frames with the runner the page uses), published here and nowhere else: no page module
+// reads a window.cloth* name.
+import { clothCore } from '../sim/core.js';
+import { clothScenes } from '../sim/scenes.js';
+import { clothRunner } from '../sim/runner.js';
+import { clothRenderer } from '../draw/renderer.js';
+import { clothCharts } from '../draw/charts.js';
+import { clothCapture } from '../draw/capture.js';
+import { clothGestures } from '../input/gestures.js';
+import { clothInput } from '../input/input.js';
+import { clothReadouts } from './readouts.js';
 
-window.clothSeam = (function () {
+Object.assign(window, { clothCore, clothScenes, clothRunner, clothRenderer, clothCharts, clothCapture,
+                        clothGestures, clothInput, clothReadouts });
+
+export const clothSeam = (function () {
   // app: {state(), sess(), canvas, renderer, charts, ui, runner, session, bladeOn(),
   // allAsleep(), autoFloor, render, and the actions listed in clothApp below}.
   function publish(app) {
