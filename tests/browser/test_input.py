@@ -317,8 +317,8 @@ def test_within_reach_the_held_vertex_is_under_the_pointer_after_every_frame(ope
 @pytest.mark.xfail(strict=True, reason='known limit: on finer grids the held vertex trails even at 8 px a '
                    'frame: 1.8 px on the towel at 60x60, 4.0 px on the curtain and 6.9 px on Two corners at '
                    '120x120 (0.4-1.0 px at 30x30 and on the curtain at 60x60): the step\'s five sweeps and one '
-                   'coarse correction do not carry a moving hand\'s pull through the finer cloth (docs/physics.md, '
-                   'Known limits)')
+                   'coarse correction do not carry a moving hand\'s pull through the finer cloth (4 corrections: '
+                   'Two corners at 120x120 1.0 px, at about 2.4 times the cost; docs/physics.md, Known limits)')
 def test_within_reach_the_held_vertex_follows_on_finer_grids(open_page):
     lags = worst_lag(open_page(), 'mouse', 8.0, (('towel', 60), ('curtain', 120), ('corners', 120)))
     assert all(0 <= v <= 1.5 for v in lags.values()), lags
