@@ -7,12 +7,17 @@ JS and compares bit for bit. Plain data and CPython only: no browser is needed t
 - every preset (cloth/presets.py), on a small grid of its own shape, under each solver;
 - the hard cases (tests/hard_cases.py: huge steps, one sweep, 100 g, teleports), whose physics
   the CPython tests prove and whose doubles the page must then give too;
-- a 40x30 grid under each solver.
-The recordings made before the membrane (tests/recordings/) are replayed through the page's own
-loop by tests/browser/test_recordings_page.py.
+- a 40x30 grid under each solver;
+- the recordings made before the membrane (tests/recordings/: every op, five presets, a
+  material set live), through RECORDED frames, by which every op each holds has happened.
+  They are also replayed through the page's own loop, compare mode's panels included, by
+  tests/browser/test_recordings_page.py, and their panels in CPython by tests/test_recordings.py.
 
 CATALOGUE: {name: (scene object, frames)}; frames None runs a scene's own `frames`.
 """
+
+import json
+from pathlib import Path
 
 from cloth.fabrics import FABRICS
 from cloth.keys import MODEL
@@ -190,5 +195,11 @@ for _name, _case in list(HARD.items()) + list(BOUNDED.items()):
 # A larger grid, many frames, under each solver.
 for _solver in SOLVERS:
     SCENES['grid-40x30-' + _solver] = (grid(40, 30, pins=[0, 13, 26, 39], solver=_solver), 20)
+# The recordings made before the membrane, as a person made them in the page.
+RECORDINGS_DIR = Path(__file__).parent / 'recordings'
+RECORDINGS = {p.stem: json.loads(p.read_text()) for p in sorted(RECORDINGS_DIR.glob('*.json'))}
+RECORDED = 160
+for _name, _scene in RECORDINGS.items():
+    SCENES['recording-' + _name] = (_scene, RECORDED)
 
 CATALOGUE = SCENES

@@ -8,16 +8,16 @@ holds happens by then; a frame of 30x30 takes CPython about 0.1 s); the page pla
 (tests/browser/test_recordings_page.py)."""
 import json
 import math
-from pathlib import Path
 
 import pytest
 
 from cloth.api import load, notes, run
 from cloth.keys import MODEL
 
-HERE = Path(__file__).parent / 'recordings'
+from catalogue import RECORDINGS, RECORDINGS_DIR as HERE, RECORDED
+
 PLAYED = 100
-FILES = sorted(p.stem for p in HERE.glob('*.json') if p.name != 'expected.json')
+FILES = sorted(RECORDINGS)
 
 
 def cases():
@@ -31,6 +31,9 @@ def cases():
 
 def test_the_recordings_are_of_the_old_model_and_include_compare_mode():
     assert len(FILES) >= 5
+    for scene in RECORDINGS.values():   # the parity suite plays each through every kind of op
+        kinds = {a['op'] for a in scene['actions']}
+        assert {a['op'] for a in scene['actions'] if a['frame'] <= RECORDED} == kinds
     for name in FILES:
         assert 'model' not in json.loads((HERE / (name + '.json')).read_text())   # model 1
     assert any(panel >= 0 for _, panel in cases())
