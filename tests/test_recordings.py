@@ -14,7 +14,7 @@ import pytest
 from cloth.api import load, notes, run
 from cloth.keys import MODEL
 
-from catalogue import RECORDINGS, RECORDINGS_DIR as HERE, RECORDED
+from catalogue import RECORDINGS, RECORDED
 
 PLAYED = 100
 FILES = sorted(RECORDINGS)
@@ -23,7 +23,7 @@ FILES = sorted(RECORDINGS)
 def cases():
     out = []
     for name in FILES:
-        scene = json.loads((HERE / (name + '.json')).read_text())
+        scene = RECORDINGS[name]
         panels = len(scene.get('compare', []))
         out += [(name, -1)] + [(name, i) for i in range(panels)]
     return out
@@ -35,14 +35,14 @@ def test_the_recordings_are_of_the_old_model_and_include_compare_mode():
         kinds = {a['op'] for a in scene['actions']}
         assert {a['op'] for a in scene['actions'] if a['frame'] <= RECORDED} == kinds
     for name in FILES:
-        assert 'model' not in json.loads((HERE / (name + '.json')).read_text())   # model 1
+        assert 'model' not in RECORDINGS[name]   # model 1
     assert any(panel >= 0 for _, panel in cases())
 
 
 @pytest.mark.parametrize('name,panel', cases())
 def test_a_recording_made_before_plays_every_frame_under_the_membrane_and_says_so(name, panel):
-    text = (HERE / (name + '.json')).read_text()
-    scene = json.loads(text)
+    scene = RECORDINGS[name]
+    text = json.dumps(scene)
     assert {'grab', 'move', 'release', 'set'} <= {a['op'] for a in scene['actions']
                                                   if a['frame'] <= PLAYED}
     assert scene['frames'] > PLAYED

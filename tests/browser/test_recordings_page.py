@@ -1,21 +1,18 @@
 """Recordings made before the membrane model (model 1: tests/recordings/, every op, five
 presets, a material set live, compare mode with a hand that moves `by`) open in the page, say
 that they run as a membrane, play every frame to their end and stop there, and give the page
-the positions CPython gives them, bit for bit (the hashes of the old core's positions in
-tests/recordings/expected.json are no longer expected: the membrane moves the cloth
-differently). CPython's side: tests/test_recordings.py."""
+the positions CPython gives them, bit for bit (the old core's positions are no longer expected:
+the membrane moves the cloth differently). The recordings come from the scene catalogue
+(tests/catalogue.py RECORDINGS); CPython's side: tests/test_recordings.py."""
 import json
 import math
-from pathlib import Path
 
 import pytest
 
-from browser_helpers import ROOT
-
+from catalogue import RECORDINGS
 from cloth.api import run
 
-HERE = Path(ROOT) / 'tests' / 'recordings'
-FILES = sorted(p.stem for p in HERE.glob('*.json') if p.name != 'expected.json')
+FILES = sorted(RECORDINGS)
 # The frames compared with CPython: every op a recording holds has happened by then
 # (tests/test_recordings.py checks it), and CPython takes about 0.1 s a frame of 30x30.
 PLAYED = 100
@@ -24,8 +21,8 @@ PLAYED = 100
 @pytest.mark.parametrize('name', FILES)
 def test_a_recording_made_before_plays_in_the_page_as_in_cpython_and_says_so(open_page, name):
     pg = open_page('?paused=1')
-    text = (HERE / (name + '.json')).read_text()
-    scene = json.loads(text)
+    scene = RECORDINGS[name]
+    text = json.dumps(scene)
     assert 'model' not in scene                                   # model 1
     frames = scene['frames']
     pg.js('(t) => { clothApp.loadScene(t); clothApp.setPaused(true); }', text)
