@@ -72,9 +72,11 @@ ARMIJO = 1e-4
 # (docs/physics.md, "A hand on a fine grid"): the block moved alike on every side lifted a
 # cloth's slack part (a 12x12 curtain lifted and let go rose 30% higher than its energy
 # allows); a guess within reach moved a swinging chain that a hand followed along its own
-# path 4.4 cm off it (2.2 cm without). G's minimum, the step's answer, does not depend on the
-# guess.
-FOLLOW = 0.5
+# path 4.4 cm off it (2.2 cm without); 0.5 m let a chain lifted 0.2 m gain 1.0-1.6% of its
+# energy after letting go (60 and 120 vertices, python -m bench --releases), 0.3 m none. No
+# guess either where the hand moves into slack cloth (pulls()). G's minimum, the step's answer,
+# does not depend on the guess.
+FOLLOW = 0.3
 FOLLOW_TRIES = 3
 
 
@@ -155,6 +157,8 @@ def follow_hands(cloth):
         share = 1.0 - reach / way       # s: the share of the way beyond reach
         dx *= share
         dy *= share
+        if not pulls(cloth, k, dx, dy):
+            continue
         r0 = k // cols
         c0 = k - r0 * cols
         count = 0
@@ -196,6 +200,21 @@ def follow_hands(cloth):
                 pos[v + v + 1] += alpha * d[v + v + 1]
         for j in range(count):
             wt[near[j]] = 0.0
+
+
+def pulls(cloth, k, dx, dy):
+    """Whether moving vertex k by (dx, dy) leaves one of its springs longer than at rest: a hand
+    that pulls the cloth (one that moves into slack cloth carries nothing with it)."""
+    pos = cloth.pos
+    x = pos[k + k] + dx
+    y = pos[k + k + 1] + dy
+    for q in range(cloth.adj_start[k], cloth.adj_start[k + 1]):
+        j = cloth.adj_other[q] + cloth.adj_other[q]
+        ex = pos[j] - x
+        ey = pos[j + 1] - y
+        if ex * ex + ey * ey > cloth.adj_rest[q] * cloth.adj_rest[q]:
+            return True
+    return False
 
 
 def near_energy(cloth, count):
