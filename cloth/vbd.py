@@ -219,7 +219,7 @@ def pulls(cloth, k, dx, dy):
 
 def near_energy(cloth, count):
     """out[1] = the part of G (energy()) that moving the vertices of follow_list[:count] by
-    alpha dirn changes: their inertia and hands, and every spring with an end among them."""
+    alpha follow_d changes: their inertia and hands, and every spring with an end among them."""
     alpha = cloth.alpha
     pos = cloth.pos
     d = cloth.follow_d
