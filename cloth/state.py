@@ -81,9 +81,6 @@ class Cloth:
         self.n_gripped = 0
         self.grip_dist = f64(n)   # work arrays of a grip's walk
         self.grip_list = i32(n)
-        self.follow_w = f64(n)    # work arrays of a hand's guess (vbd.follow_hands): each
-        self.follow_d = f64(2 * n)    # vertex's weight and move, and the list of them
-        self.follow_list = i32(n)
         for k in range(n):
             self.grip[k] = -1
             self.grip_dist[k] = -1.0

@@ -55,29 +55,6 @@ COARSE_STEPS = 2
 # Armijo's fraction.
 MOST_ALPHA = 1.0
 ARMIJO = 1e-4
-# The hands' guess: before the sweeps, the cloth round each hand is moved with it, as one
-# block and where that lowers G (the way halved up to FOLLOW_TRIES times, else not at all),
-# by the hand's way beyond its reach (the hand's pull over its stiffness: within it the hand's
-# spring is stiff and the sweeps put the held vertex where it goes). Each vertex within
-# FOLLOW of the held one (along the grid) moves by that way times
-#     (1 - distance / FOLLOW) sqrt((1 + s cos a) / 2),
-# a the angle between the way and the vertex's direction to the hand, s the share of the way
-# that is beyond reach: a taut cloth follows a short move alike on every side, and a long one
-# pulls what is behind the hand and slackens what it moves into (tension-only springs). A
-# hand moving a cloth pulls a point of it, whose answer spans every scale from the grip out:
-# the sweeps reach a few vertices, the correction the smooth rest, and without the guess the
-# held vertex trailed the hand more the finer the grid (8 px a frame, in the page: 1.8 px on a
-# 60x60 towel, 6.9 px on Two corners at 120x120) and in fast flicks (20 px a frame: 55 px on
-# the 60x60 towel, 35 px on Two corners). The shape and FOLLOW were chosen by measurement
-# (docs/physics.md, "A hand on a fine grid"): the block moved alike on every side lifted a
-# cloth's slack part (a 12x12 curtain lifted and let go rose 30% higher than its energy
-# allows); a guess within reach moved a swinging chain that a hand followed along its own
-# path 4.4 cm off it (2.2 cm without); 0.5 m let a chain lifted 0.2 m gain 1.0-1.6% of its
-# energy after letting go (60 and 120 vertices, python -m bench --releases), 0.3 m none. No
-# guess either where the hand moves into slack cloth (pulls()). G's minimum, the step's answer,
-# does not depend on the guess.
-FOLLOW = 0.3
-FOLLOW_TRIES = 3
 
 
 def prepare(cloth):
@@ -107,8 +84,6 @@ def solve(cloth):
         for t in range(2 * cloth.n_verts):
             pos[t] = cloth.pred[t]
         return
-    if cloth.n_held > 0:
-        follow_hands(cloth)
     first = sweeps // 2
     forward = True
     for s in range(first):
@@ -127,141 +102,6 @@ def solve(cloth):
     let_fall(cloth)
     if cloth.n_obstacles == 0:
         keep_momentum(cloth)
-
-
-def follow_hands(cloth):
-    """The hands' guess (FOLLOW): each hand's neighbourhood moved toward where the hand is
-    going, as far as that lowers G."""
-    cols = cloth.cols
-    rows = cloth.rows
-    h = cloth.spacing
-    pos = cloth.pos
-    d = cloth.follow_d
-    wt = cloth.follow_w
-    near = cloth.follow_list
-    fixed = cloth.fixed
-    grip = cloth.grip
-    sqrt = math.sqrt
-    around = math.floor(FOLLOW / h)
-    for g in range(cloth.n_gripped):
-        k = cloth.gripped[g]
-        if grip[k] != k:
-            continue
-        kk = k + k
-        dx = cloth.aim[kk] - pos[kk]
-        dy = cloth.aim[kk + 1] - pos[kk + 1]
-        way = sqrt(dx * dx + dy * dy)
-        reach = cloth.grip_f[k] / cloth.grip_k[k]
-        if way <= reach:
-            continue
-        share = 1.0 - reach / way       # s: the share of the way beyond reach
-        dx *= share
-        dy *= share
-        if not pulls(cloth, k, dx, dy):
-            continue
-        r0 = k // cols
-        c0 = k - r0 * cols
-        count = 0
-        for r in range(max(0, r0 - around), min(rows, r0 + around + 1)):
-            for c in range(max(0, c0 - around), min(cols, c0 + around + 1)):
-                v = r * cols + c
-                if fixed[v] != 0:
-                    continue
-                w = 1.0
-                if grip[v] != k:
-                    w = 1.0 - h * sqrt((r - r0) * (r - r0) + (c - c0) * (c - c0)) / FOLLOW
-                    ux = pos[kk] - pos[v + v]
-                    uy = pos[kk + 1] - pos[v + v + 1]
-                    u = sqrt(ux * ux + uy * uy)
-                    # (1 + s cos a) / 2; (dx, dy) is s times the way
-                    behind = 0.5 + 0.5 * (ux * dx + uy * dy) / (u * way) if u > 0.0 else 1.0
-                    w = w * sqrt(behind) if behind > 0.0 else 0.0
-                if w <= 0.0:
-                    continue
-                wt[v] = w
-                d[v + v] = w * dx
-                d[v + v + 1] = w * dy
-                near[count] = v
-                count += 1
-        cloth.alpha = 0.0
-        near_energy(cloth, count)
-        g0 = cloth.out[1]
-        alpha = 1.0
-        for t in range(FOLLOW_TRIES + 1):
-            cloth.alpha = alpha
-            near_energy(cloth, count)
-            if cloth.out[1] < g0:
-                break
-            alpha *= 0.5
-        if cloth.out[1] < g0:
-            for j in range(count):
-                v = near[j]
-                pos[v + v] += alpha * d[v + v]
-                pos[v + v + 1] += alpha * d[v + v + 1]
-        for j in range(count):
-            wt[near[j]] = 0.0
-
-
-def pulls(cloth, k, dx, dy):
-    """Whether moving vertex k by (dx, dy) leaves one of its springs longer than at rest: a hand
-    that pulls the cloth (one that moves into slack cloth carries nothing with it)."""
-    pos = cloth.pos
-    x = pos[k + k] + dx
-    y = pos[k + k + 1] + dy
-    for q in range(cloth.adj_start[k], cloth.adj_start[k + 1]):
-        j = cloth.adj_other[q] + cloth.adj_other[q]
-        ex = pos[j] - x
-        ey = pos[j + 1] - y
-        if ex * ex + ey * ey > cloth.adj_rest[q] * cloth.adj_rest[q]:
-            return True
-    return False
-
-
-def near_energy(cloth, count):
-    """out[1] = the part of G (energy()) that moving the vertices of follow_list[:count] by
-    alpha follow_d changes: their inertia and hands, and every spring with an end among them."""
-    alpha = cloth.alpha
-    pos = cloth.pos
-    d = cloth.follow_d
-    pred = cloth.pred
-    mass = cloth.mass
-    wt = cloth.follow_w
-    near = cloth.follow_list
-    start = cloth.adj_start
-    other = cloth.adj_other
-    arest = cloth.adj_rest
-    ak = cloth.adj_k
-    half_ws = 0.5 * cloth.w_scale
-    sqrt = math.sqrt
-    s = 0.0
-    for t in range(count):
-        i = near[t]
-        ii = i + i
-        xi = pos[ii] + alpha * d[ii]
-        yi = pos[ii + 1] + alpha * d[ii + 1]
-        ex = xi - pred[ii]
-        ey = yi - pred[ii + 1]
-        w = half_ws * mass[i]
-        if cloth.grip[i] >= 0:
-            w *= cloth.grip_w
-            dx = xi - cloth.aim[ii]
-            dy = yi - cloth.aim[ii + 1]
-            fh = cloth.grip_f[i]
-            reach = fh / cloth.grip_k[i]
-            s += fh * reach * (sqrt(1.0 + (dx * dx + dy * dy) / (reach * reach)) - 1.0)
-        s += w * (ex * ex + ey * ey)
-        for q in range(start[i], start[i + 1]):
-            j = other[q]
-            if wt[j] > 0.0 and j < i:
-                continue          # counted from its other end
-            jj = j + j
-            ax = alpha if wt[j] > 0.0 else 0.0
-            dx = pos[jj] + ax * d[jj] - xi
-            dy = pos[jj + 1] + ax * d[jj + 1] - yi
-            x = sqrt(dx * dx + dy * dy) - arest[q]
-            if x > 0.0:
-                s += 0.5 * ak[q] * x * x
-    cloth.out[1] = s
 
 
 def keep_momentum(cloth):

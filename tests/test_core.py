@@ -5,11 +5,10 @@ import math
 
 import pytest
 
-from helpers import scene, curtain, preset, load, step, frame, xy, result, all_finite
+from helpers import scene, curtain, load, step, xy, result, all_finite
 from cloth.api import run, simulate
 from cloth.fabrics import HEM_LAYERS, HEM_WIDTH
 from cloth.hands import HAND_FORCE, HAND_STIFFNESS, grab, release, pin, unpin, toggle_pin
-from cloth.hands import move as hand_move
 from cloth.keys import spec
 from cloth.measure import measure, energies, nearest
 from cloth.solvers import SOLVERS, DEFAULT_SOLVER, SEED_SOLVER
@@ -151,39 +150,16 @@ def test_grab_move_release_a_free_vertex_of_the_seeds_method():
     assert all_finite(sum(out['positions'], []))
 
 
-def pull_on(cloth, k):
-    """The force on vertex k (N) of its springs, sum of k_e (L - L0)_+ along each, and its
-    weight."""
-    fx, fy = cloth.mass[k] * cloth.gravity_x, cloth.mass[k] * cloth.gravity_y
-    x = cloth.pos
-    for q in range(cloth.adj_start[k], cloth.adj_start[k + 1]):
-        j = cloth.adj_other[q]
-        dx, dy = x[2 * j] - x[2 * k], x[2 * j + 1] - x[2 * k + 1]
-        length = math.hypot(dx, dy)
-        if length > cloth.adj_rest[q]:
-            s = cloth.adj_k[q] * (length - cloth.adj_rest[q]) / length
-            fx, fy = fx + s * dx, fy + s * dy
-    return math.hypot(fx, fy)
-
-
 def test_grab_move_release_a_free_vertex():
     # The default's hand (a spring pulling with at most HAND_FORCE) takes the vertex where it
     # is moved, within the cloth's reach (the bottom middle of a 3x3 curtain of spacing 0.5,
-    # swung aside and up): off the hand by the force it holds against, the vertex's springs
-    # and weight, through the spring's law k d / sqrt(1 + (d / r)^2), r = HAND_FORCE / k
-    # (cloth/hands.py), while the rest of the cloth still swings (the vertex's own inertia and
-    # the grip's damper make up the rest: within 5%, measured 3.4% at most over 300 frames).
+    # swung aside and up), to within the force it holds against over its stiffness.
     actions = [{'frame': 0, 'op': 'grab', 'vertex': 7, 'to': [0.8, -0.9]},
-               {'frame': 30, 'op': 'move', 'vertex': 7, 'to': [0.35, -0.95]}]
-    k, r = HAND_STIFFNESS, HAND_FORCE / HAND_STIFFNESS
-    for frames, to in [(19, [0.8, -0.9]), (89, [0.35, -0.95])]:
-        cloth = load(curtain(3, damping=2.0, actions=actions))
-        simulate(cloth, frames, None)
-        step(cloth, 1)                   # a frame with the hand still (no action at its end)
-        force = pull_on(cloth, 7)
-        off = math.dist(xy(cloth, 7), to)
-        assert off < r                                     # within the hand's reach
-        assert off == pytest.approx(force / math.sqrt(k * k - (force / r) ** 2), rel=0.05)
+               {'frame': 10, 'op': 'move', 'vertex': 7, 'to': [0.35, -0.95]}]
+    out = result(curtain(3, actions=actions), 10)
+    assert math.dist(out['positions'][7], [0.8, -0.9]) < 1e-3
+    out = result(curtain(3, actions=actions), 30)
+    assert math.dist(out['positions'][7], [0.35, -0.95]) < 1e-3
     # Beyond reach (1.2 m below the pin above it, whose column is 1 m long) the hand pulls
     # with HAND_FORCE and the fabric stretches as far as that takes it, no farther: less than
     # its column of two edges in series would stretch under the hand and the cloth's weight
@@ -391,33 +367,3 @@ def test_a_fabric_under_the_seeds_solver_changes_nothing_and_the_core_says_so():
     # it changes nothing either, and the note says so.
     plain = api.check(scene(cols=3, rows=3, spacing=0.1, pins=[0], solver=SEED_SOLVER))
     assert unused_settings(plain) == said_a
-
-
-def test_the_hands_guess_changes_where_a_step_starts_not_where_it_ends(monkeypatch):
-    # cloth/vbd.py follow_hands moves the cloth round a hand before the sweeps, where that
-    # lowers the step's energy G. G's minimum does not depend on where the solve starts: steps
-    # solved far past the default's budget end at the same place with the guess and without it;
-    # at the default's budget, on a 40x40 curtain, the guess leaves the held vertex nearer the
-    # hand (measured: 2.6 mm against 8.3 mm after three frames of 7 cm).
-    import cloth.vbd as vbd
-
-    def drag(guess, n, settle, **budget):
-        if not guess:
-            monkeypatch.setattr(vbd, 'follow_hands', lambda cloth: None)
-        cloth = load(preset('curtain', n, **budget))
-        step(cloth, settle)
-        k = (n - 1) * n + n // 2
-        x0, y0 = xy(cloth, k)
-        grab(cloth, k, x0, y0)
-        for f in range(1, 4):
-            hand_move(cloth, k, x0 + 0.06 * f, y0 + 0.04 * f)   # 7 cm a frame, beyond its reach
-            frame(cloth)
-        monkeypatch.undo()
-        return cloth, math.dist(xy(cloth, k), (x0 + 0.18, y0 + 0.12))
-
-    exact_with, _ = drag(True, 12, 0, iterations=200, corrections=10)
-    exact_without, _ = drag(False, 12, 0, iterations=200, corrections=10)
-    assert max(abs(a - b) for a, b in zip(exact_with.pos, exact_without.pos)) < 1e-6
-    _, trail_with = drag(True, 40, 10)
-    _, trail_without = drag(False, 40, 10)
-    assert trail_with < 0.5 * trail_without, (trail_with, trail_without)

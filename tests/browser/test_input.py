@@ -314,26 +314,23 @@ def test_within_reach_the_held_vertex_is_under_the_pointer_after_every_frame(ope
     assert all(0 <= v <= 1.5 for v in lags.values()), (kind, lags)
 
 
+@pytest.mark.xfail(strict=True, reason='known limit: on finer grids the held vertex trails even at 8 px a '
+                   'frame: 1.8 px on the towel at 60x60, 4.0 px on the curtain and 6.9 px on Two corners at '
+                   '120x120 (0.4-1.0 px at 30x30 and on the curtain at 60x60): the step\'s five sweeps and one '
+                   'coarse correction do not carry a moving hand\'s pull through the finer cloth (4 corrections: '
+                   'Two corners at 120x120 1.0 px, at about 2.4 times the cost; docs/physics.md, Known limits)')
 def test_within_reach_the_held_vertex_follows_on_finer_grids(open_page):
-    """On finer grids too (8 px a frame): the hand's guess (cloth/vbd.py FOLLOW) carries the
-    cloth round a moving hand before the sweeps; without it the held vertex trailed 1.8 px on the
-    towel at 60x60, 4.0 px on the curtain and 6.9 px on Two corners at 120x120."""
     lags = worst_lag(open_page(), 'mouse', 8.0, (('towel', 60), ('curtain', 120), ('corners', 120)))
     assert all(0 <= v <= 1.5 for v in lags.values()), lags
 
 
+@pytest.mark.xfail(strict=True, reason='known limit: at a flick of 20 px a frame (1,200 px/s, 4-6 m/s at '
+                   'the presets\' scales) round a 40 px circle the held vertex trails the pointer by 35 px on '
+                   'Two corners, 22 px on the flag, 3.0 px on the curtain and 2.2 px on the towel (a chain\'s '
+                   'end 0.04 px; Two corners 1.0 px at 12 px a frame): the hand pulls with at most HAND_FORCE '
+                   '(20 N), less than swinging the cloth hung from it that fast takes (at 50 N: 1.0 px on Two '
+                   'corners, 1.2 px on the flag), and on finer grids the sweeps lag too (the towel at 60x60: '
+                   '55 px at 20 N, 6.0 px with 20 sweeps)')
 def test_a_fast_flick_within_reach_is_followed_within_a_pixel_and_a_half(open_page):
-    """A flick of 20 px a frame (1,200 px/s, 4-6 m/s at the presets' scales) round a 40 px
-    circle: without the hand's guess the held vertex trailed 22 px on the flag, 3.0 px on the
-    curtain, 2.2 px on the towel and 55 px on the towel at 60x60."""
-    lags = worst_lag(open_page(), 'mouse', 20.0, ('curtain', 'flag', 'chain', 'towel', 'tearable', ('towel', 60)))
-    assert all(0 <= v <= 1.5 for v in lags.values()), lags
-
-
-@pytest.mark.xfail(strict=True, reason='known limit (docs/physics.md, "A hand on a fine grid"): the step\'s '
-                   'five sweeps and one correction, with the hand\'s guess, leave the held vertex 2.7 px behind '
-                   'a 20 px-a-frame flick on Two corners (35 px without the guess; 0.24 px with 40 sweeps and 6 '
-                   'corrections) and 1.8 px on Large cloth (0.54 px converged)')
-def test_a_flick_on_the_heavier_cloths_is_followed(open_page):
-    lags = worst_lag(open_page(), 'mouse', 20.0, ('corners', 'large'))
+    lags = worst_lag(open_page(), 'mouse', 20.0, ('curtain', 'corners', 'flag', ('towel', 60)))
     assert all(0 <= v <= 1.5 for v in lags.values()), lags
