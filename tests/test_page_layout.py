@@ -64,6 +64,26 @@ def test_input_and_gestures_know_no_other_module():
     assert users == {'app', 'ui/seam'}     # the seam only publishes them to the tests
 
 
+def test_only_the_simulation_side_holds_a_cloth_or_the_session():
+    """The drawing, the input and the UI read the panels' snapshots (clothCore.snapshot) and call
+    sim/panels.js: no module outside sim/ names a cloth or the session in code (the test seam
+    excepted: the tests read a live cloth through it)."""
+    found = []
+    for m in build.page_files():
+        if build.layer_of(m) == 'sim' or m == 'ui/seam':
+            continue
+        code = [re.sub(r"'[^']*'", "''", line) for line in code_of(m).split('\n')]
+        found += [(m, line) for line in code if re.search(r'\bcloth\b|\bsess\b|core\.session|\.session\(', line)]
+    assert found == []
+
+
+def test_the_cloth_check_sees_a_module_that_reads_a_cloth():
+    # The pattern above on the lines the old readouts and app had.
+    lines = ['const c = state.cloth;', 'session.grab(sess, k, x, y);', 'panels.snap(0).rms_strain']
+    hits = [line for line in lines if re.search(r'\bcloth\b|\bsess\b|core\.session|\.session\(', line)]
+    assert hits == lines[:2]
+
+
 def test_the_renderer_never_reads_a_cloth():
     """It draws a snapshot (clothCore.snapshot); comments and messages may name the cloth,
     code may not."""

@@ -66,11 +66,12 @@ export const clothStage = (function () {
     return panel.draw.toWorld(clientX - r.left, clientY - r.top);
   }
 
-  // Every held vertex of every panel, and its hand (which a hand of finite strength's vertex
-  // may lag behind or stop short of), in canvas CSS px, to `visit` until it says stop.
+  // Every held vertex of every panel ({snap, draw}: its snapshot's held, pos and target), and
+  // its hand (which a hand of finite strength's vertex may lag behind or stop short of), in
+  // canvas CSS px, to `visit` until it says stop.
   function heldPoints(panels, visit) {
     for (let j = 0; j < panels.length; j++) {
-      const c = panels[j].cloth, d = panels[j].draw;
+      const c = panels[j].snap, d = panels[j].draw;
       for (let k = 0; k < c.n_verts; k++) {
         if (c.held[k] === 0) continue;
         const p = d.toCanvas(c.pos[2 * k], c.pos[2 * k + 1]);

@@ -107,6 +107,36 @@ export const clothCore = (function (api) {
     out.obstacle_shape = cloth.obstacle_shape;
     out.obstacle_half = cloth.obstacle_half;
     out.obstacle_at = cloth.obstacle_to;
+    // Where each held vertex's hand is (a hand of finite strength's vertex may lag it).
+    out.target = cloth.target;
+    return out;
+  };
+  // What the readouts, the legend and the loop read of a cloth: cloth/measure.py's measures,
+  // the solver's balance, the grid, the step and what runs, copied into `out` (made once per
+  // panel: numbers and the scene's words, no allocation). Apart from the snapshot, whose shape
+  // the renderer's hot path is compiled for.
+  core.readings = function (cloth, out) {
+    out = out || {};
+    out.cols = cloth.cols;
+    out.rows = cloth.rows;
+    out.rms_strain = cloth.rms_strain;
+    out.max_strain = cloth.max_strain;
+    out.high_value = cloth.high_value;
+    out.max_stress = cloth.max_stress;
+    out.imbalance = cloth.imbalance;
+    out.springs = cloth.n_edges;
+    out.broken = cloth.broken;
+    out.asleep = cloth.asleep;
+    out.dt = cloth.dt;
+    out.substeps = cloth.substeps;
+    out.iterations = cloth.iterations;
+    out.corrections = cloth.corrections;
+    const sc = out.scene || (out.scene = {});
+    sc.solver = cloth.scene.solver;
+    sc.stretch = cloth.scene.stretch;
+    sc.shear = cloth.scene.shear;
+    sc.density = cloth.scene.density;
+    sc.tear = cloth.scene.tear;
     return out;
   };
   // parseScene(sceneJsonText[, panel]) -> the checked scene, nothing built (cloth/api.py

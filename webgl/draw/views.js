@@ -1,0 +1,47 @@
+// The panels as the canvas shows them: each panel's snapshot (sim/panels.js) with its renderer
+// panel (renderer.js), their rectangles in the canvas (stage.js), and what a pointer there
+// points at. Made anew for every scene loaded; laid out again on every change of size.
+import { clothStage } from './stage.js';
+
+export const clothViews = (function () {
+  const stage = clothStage;
+
+  // canvas, renderer (renderer.js), band() (the CSS px the overlays take below the panels).
+  function create(canvas, renderer, band) {
+    let list = [], rects = [], view = null;
+
+    // The panels' snapshots, shown in the world box `shown` ({x0, x1, y0, y1}).
+    function open(given, shown) {
+      list = []; view = shown;
+      for (let i = 0; i < given.length; i++) list.push({ snap: given[i], draw: renderer.ok ? renderer.panel(i) : null });
+      if (!renderer.ok) return;
+      list.forEach(function (v) { v.draw.setScene(v.snap); v.draw.setView(view); });
+      layout();
+    }
+
+    // The rectangles for the canvas's size now.
+    function layout() {
+      if (renderer.ok && list.length) rects = stage.layout(list, view, renderer.cssWidth, renderer.cssHeight - band());
+    }
+
+    function heldPoints(visit) { return stage.heldPoints(list, visit); }
+
+    return {
+      open: open, layout: layout, heldPoints: heldPoints,
+      count: function () { return list.length; },
+      list: function () { return list; },
+      rects: function () { return rects; },
+      // The WebGL context came back: every panel's buffers made again.
+      restored: function () { list.forEach(function (v) { v.draw.setScene(v.snap); }); },
+      // A pointer at client px -> {panel (-1: none), x, y (world metres there)}.
+      locate: function (x, y) { return renderer.ok ? stage.locate(canvas, list, x, y) : { panel: -1, x: NaN, y: NaN }; },
+      toWorld: function (i, x, y) { return stage.toWorld(canvas, list[Math.min(i, list.length - 1)], x, y); },
+      // Panel i's pixels (CSS) per metre.
+      pixelsPerMetre: function (i) { return list[i].draw.pixelsPerMetre(); },
+      // A world point of panel i in canvas CSS px.
+      toCanvas: function (i, x, y) { return list[i].draw.toCanvas(x, y); },
+    };
+  }
+
+  return { create: create };
+})();
