@@ -35,6 +35,10 @@ DIST_HTML = os.path.join(ROOT, 'dist', 'index.html')
 # and the wiring, which sits above them all.
 LAYERS = ['sim', 'draw', 'input', 'ui']
 PAGE_ENTRY = 'app'
+# The session's Web Worker: this module and what it imports, linked into a script of its own
+# that the page inlines as text (<script type="text/plain" id="cloth-worker">) and starts, with
+# the core's script (id="cloth-core"), as a Worker made from a Blob (webgl/sim/remote.js).
+WORKER_ENTRY = 'sim/worker'
 STYLES = ['style.css']
 # GLSL, inlined as <script type="x-shader/x-vertex|fragment" id="shader-NAME"> for renderer.js.
 SHADERS = ['colour.glsl', 'edge.vert', 'edge.frag', 'cell.vert', 'cell.frag', 'mark.vert', 'mark.frag']
@@ -205,14 +209,29 @@ def layer_of(module):
     return module.split('/')[0] if '/' in module else 'app'
 
 
+def link_worker():
+    """The Worker's modules, from webgl/sim/worker.js down, as one classic script that serves
+    the messages of the Worker it runs in (after the core's script)."""
+    linked = modules(WEBGL, WORKER_ENTRY)
+    bad = [m for m, _ in linked if layer_of(m) != 'sim']
+    if bad:
+        raise BuildError('the Worker reaches modules outside sim/: %s' % bad)
+    out = ['(function () {']
+    for module, parsed in linked:
+        out.extend(wrapped(module, parsed, 'webgl/%s.js' % module))
+    out.append('%s.clothWorker.serve(self);' % _ident(WORKER_ENTRY))
+    out.append('})();')
+    return '\n'.join(out) + '\n'
+
+
 def link_page():
     """The page's modules, from webgl/app.js down, as one classic script: no global of its
     own (the test seam publishes what the tests and the benchmark reach)."""
     linked = modules(WEBGL, PAGE_ENTRY)
-    names = [m for m, _ in linked]
+    names = [m for m, _ in linked] + [m for m, _ in modules(WEBGL, WORKER_ENTRY)]
     missing = sorted(set(page_files()) - set(names))
     if missing:
-        raise BuildError('page files that app.js does not reach: %s' % missing)
+        raise BuildError('page files that neither app.js nor the Worker reaches: %s' % missing)
     bad = [m for m in names if layer_of(m) not in LAYERS + ['app'] or (layer_of(m) == 'app' and m != PAGE_ENTRY)]
     if bad:
         raise BuildError('page files outside the layers %s: %s' % (LAYERS, bad))
@@ -249,7 +268,8 @@ def page(core_js):
         kind = 'x-shader/x-vertex' if name.endswith('.vert') else 'x-shader/x-fragment'
         blocks.append('<script type="%s" id="shader-%s">\n%s</script>' % (
             kind, name, _inline_safe(_read(os.path.join('shaders', name)), name)))
-    blocks.append('<script>\n' + _inline_safe(core_js, 'core') + '</script>')
+    blocks.append('<script id="cloth-core">\n' + _inline_safe(core_js, 'core') + '</script>')
+    blocks.append('<script type="text/plain" id="cloth-worker">\n' + _inline_safe(link_worker(), 'worker') + '</script>')
     blocks.append('<script>\n' + _inline_safe(link_page(), 'webgl') + '</script>')
     html = _read(TEMPLATE)
     for marker in ('<!-- @style -->', '<!-- @scripts -->'):

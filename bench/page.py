@@ -36,7 +36,7 @@ def page_of(browser, errors):
     page.on('pageerror', lambda e: errors.append(str(e)))
     page.route('**/*', lambda route: route.continue_() if route.request.url.startswith('file:')
                else route.abort())
-    page.goto('file://' + DIST)
+    page.goto('file://' + DIST + '?worker=0')   # the benchmark steps cloths itself (harness.js)
     return page
 
 

@@ -27,9 +27,11 @@ def rank(module):
     return (build.LAYERS + ['app']).index(build.layer_of(module))
 
 
-def test_every_page_file_is_a_module_in_a_layer_and_linked_from_app():
+def test_every_page_file_is_a_module_in_a_layer_and_linked_from_app_or_the_worker():
     linked = [m for m, _ in build.modules(build.WEBGL, build.PAGE_ENTRY)]
-    assert sorted(linked) == build.page_files()
+    worker = [m for m, _ in build.modules(build.WEBGL, build.WORKER_ENTRY)]
+    assert sorted(set(linked) | set(worker)) == build.page_files()
+    assert {build.layer_of(m) for m in worker} == {'sim'}      # the Worker has no page to draw
     assert [m for m in linked if '/' not in m] == [build.PAGE_ENTRY]
     assert {build.layer_of(m) for m in linked} == set(build.LAYERS) | {'app'}
 

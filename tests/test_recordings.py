@@ -14,9 +14,8 @@ import pytest
 from cloth.api import load, notes, run
 from cloth.keys import MODEL
 
-from catalogue import RECORDINGS, RECORDED
+from catalogue import RECORDINGS, RECORDED, PLAYED
 
-PLAYED = 100
 FILES = sorted(RECORDINGS)
 
 

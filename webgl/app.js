@@ -1,19 +1,19 @@
-// The app: the loop and the wiring. The simulation's side is sim/panels.js (the session: the
-// panels' cloths, their scripts, the recording, the replay); the drawing reads its snapshots
-// (draw/), pointers become its gestures (input/), the controls, the scene that runs and the
-// readouts are ui/. The test seam (ui/seam.js: window.clothApp) is published here.
+// The app: the loop and the wiring. The simulation's side is sim/ (panels.js, or remote.js: the
+// session in a Worker); draw/ shows its snapshots, input/ turns pointers into its gestures, ui/
+// holds the controls, the scene that runs, the readouts and the test seam (window.clothApp).
 //
 // Loop: the core advances a fixed dt per frame; the wall clock appears only here. Elapsed time
-// goes into an accumulator, capped at MAX_GAP (a tab switch or a stall becomes a short pause,
-// never a huge step), and at most MAX_CATCHUP frames run per animation frame, and no more once
-// FRAME_BUDGET_MS is spent (the rest of a backlog is dropped: a slow scene runs in slow motion
-// and says so, instead of spiralling or making input wait for a burst of catch-up frames).
-// A replay plays up to its last frame and stops there, paused.
+// goes into an accumulator, capped at MAX_GAP (a stall becomes a short pause, never a huge
+// step); at most MAX_CATCHUP frames are due per animation frame, and no more run once
+// FRAME_BUDGET_MS is spent: the rest is dropped (slow motion, and the readout says so), never
+// owed, so input never waits for a burst of catch-up. A Worker is asked for the frames due when
+// it is idle; the page draws what it posted last and never waits for it.
 import { clothBlade } from './draw/blade.js';
 import { clothCapture } from './draw/capture.js';
 import { clothCharts } from './draw/charts.js';
 import { clothColours } from './ui/colours.js';
 import { clothCompare } from './ui/compare.js';
+import { clothControls } from './ui/controls.js';
 import { clothCore } from './sim/core.js';
 import { clothFiles } from './ui/files.js';
 import { clothGestures } from './input/gestures.js';
@@ -24,6 +24,7 @@ import { clothOverlays } from './draw/overlays.js';
 import { clothPainter } from './draw/painter.js';
 import { clothPanels } from './sim/panels.js';
 import { clothReadouts } from './ui/readouts.js';
+import { clothRemote } from './sim/remote.js';
 import { clothRenderer } from './draw/renderer.js';
 import { clothScene } from './ui/scene.js';
 import { clothScenes } from './sim/scenes.js';
@@ -43,9 +44,12 @@ import { clothViews } from './draw/views.js';
   const core = clothCore, scenes = clothScenes, stage = clothStage, share = clothShare;
   const canvas = document.getElementById('view');
   const options = clothOptions.parse(window.location.search, scenes.PRESETS);
-  const panels = clothPanels.create();
+  // The session in a Worker (the default); with ?worker=0, or where a Worker cannot start (and
+  // the page says so), on this thread.
+  let panels = options.worker ? clothRemote.start(arrived, stopped) : null;
+  if (options.worker && !panels) options.notes.push('This browser could not start a Web Worker: the simulation runs on the page\'s own thread');
+  panels = panels || clothPanels.create();
 
-  let simMs = [], reads = [];  // each panel's sim time (ms a frame) and readings (panels.read)
   let paused = false, acc = 0, last = -1, dirty = true, trail = false, bladeOn = false;
   let chartsOn = true, relayouts = 0;
   let wanted = 0, played = 0, speed = 1;   // wall-clock and simulated seconds since the last readout
@@ -57,28 +61,8 @@ import { clothViews } from './draw/views.js';
   const capture = clothCapture.create([canvas, document.getElementById('obstacles')],
                                       function (blob, name) { share.download(blob, name); },
                                       function (text) { ui.note(text); });
-  const ui = clothUI.create({
-    pause: function () { setPaused(!paused); },
-    step: function () { setPaused(true); advance(1); sampleCharts(true); },
-    reset: function () { scene.reset(); },
-    preset: function (name) { scene.usePreset(name); },
-    solver: function (name) { settings.setSolver(name); },
-    material: function (name) { settings.setMaterial(name); },
-    param: function (key, raw) { settings.setParam(key, raw); },
-    mode: function (m) { colours.setMode(m || colours.otherMode()); },
-    scaleMode: function (m) { colours.setScaleMode(m || colours.otherScale()); },
-    fullScale: function (raw) { colours.setFullScale(raw); },
-    loadJson: function (text) { scene.paste(text); },
-    currentJson: function () { return JSON.stringify(scene.obj(), null, 1); },
-    replay: function () { files.replay(); },
-    exportFile: function () { files.exportRecording(); },
-    copyLink: function () { files.copyLink(); },
-    picture: function () { files.picture(); },
-    video: function () { ui.setVideo(capture.toggleVideo(files.mediaName())); },
-    openFile: function (file) { files.openFile(file); },
-    charts: function (on) { setCharts(on); },
-    cutTool: function (on) { setCutTool(on === undefined ? !bladeOn : on); },
-  });
+  const controls = {};         // the controls' handlers (controls.js), filled once the modules exist
+  const ui = clothUI.create(controls);
   const colours = clothColours.create(ui, function () { dirty = true; });
   const compareUI = clothCompare.create({
     change: function (list, note) { scene.setCompare(list, note); },
@@ -96,7 +80,7 @@ import { clothViews } from './draw/views.js';
   const painter = clothPainter.create(renderer, obstacles, capture);
   const overlays = clothOverlays.create(canvas, [document.getElementById('legend'),
     document.getElementById('hud'), document.getElementById('charts')], document.getElementById('overlays'));
-  const views = clothViews.create(canvas, renderer, overlays.band);
+  const views = clothViews.create(canvas, renderer, overlays.band, panels);
   const scene = clothScene.create({
     panels: panels, ui: ui, compareUI: compareUI, opened: opened, render: render, setPaused: setPaused,
     changed: function () { dirty = true; }, gestures: function () { return gestures; },
@@ -111,8 +95,7 @@ import { clothViews } from './draw/views.js';
   // The panels are new (a scene loaded): their views, charts and layout.
   function opened() {
     const snaps = [];
-    simMs = []; reads = [];
-    for (let i = 0; i < panels.count(); i++) { snaps.push(panels.snap(i)); reads.push(panels.read(i)); simMs.push(NaN); }
+    for (let i = 0; i < panels.count(); i++) snaps.push(panels.snap(i));
     acc = 0; wanted = 0; played = 0; speed = 1;
     charts.reset(snaps.length);
     views.open(snaps, scene.view());
@@ -124,24 +107,34 @@ import { clothViews } from './draw/views.js';
 
   function setCharts(on) { chartsOn = !!on; ui.setCharts(chartsOn); if (on) charts.draw(); relayout(); }
 
-  // ---- stepping and drawing -------------------------------------------------
-
   // Runs up to n frames (panels.simulate); a replay stops at its last frame.
   function simulate(n, budgetMs) {
     const resting = panels.asleep();         // at rest: nothing stepped, nothing to draw again
     const done = panels.simulate(n, budgetMs);
-    for (let i = 0; i < simMs.length; i++) simMs[i] = panels.simMs(i);
-    if (panels.scriptRan()) { scene.scripted(); dirty = true; }
-    if (done > 0 && !resting) dirty = true;
-    if (panels.atReplayEnd()) { scene.replayEnded(); setPaused(true); }
+    ran(done > 0 && !resting);
     return done;
   }
+
+  // Frames ran (here, or in the Worker: arrived), `moved`: the cloth with them.
+  function ran(moved) {
+    if (panels.scriptRan()) { scene.scripted(); dirty = true; }
+    if (moved) dirty = true;
+    if (panels.atReplayEnd()) { scene.replayEnded(); setPaused(true); }
+  }
+
+  // The Worker posted its state: `done` more frames, or what gestures and settings did.
+  function arrived(done) {
+    if (done > 0 && views.count()) played += done * panels.read(0).dt;
+    ran(true);
+  }
+
+  function stopped(msg) { setPaused(true); ui.error('Simulation stopped: ' + msg); }
 
   function render() {
     if (!views.count() || !renderer.ok || renderer.lost) return;
     overlays.fade(gestures.count() > 0, views.heldPoints);
     panels.refresh();
-    painter.draw(views.list(), reads, colours, views.rects(), gestures.moving());
+    painter.draw(views.list(), panels.reads(), colours, views.rects(), gestures.moving());
     dirty = false;
   }
 
@@ -150,6 +143,10 @@ import { clothViews } from './draw/views.js';
   // queue a draw for each).
   function advance(frames, undrawn) {
     const n = Math.max(0, Math.floor(Number(frames) || 0));
+    if (panels.remote) {
+      // A Promise of the frame, once the Worker has run them all.
+      return panels.run(n).then(function () { if (!undrawn) render(); return panels.frame(); });
+    }
     if (n > 0) simulate(n);
     if (!undrawn) render();
     return panels.frame();
@@ -169,7 +166,7 @@ import { clothViews } from './draw/views.js';
     if (wanted > 0) speed = played / wanted;
     wanted = 0; played = 0;
     panels.refresh();
-    numbers.show({ reads: reads, simMs: simMs, rects: views.rects(), paused: paused, speed: speed,
+    numbers.show({ reads: panels.reads(), simMs: panels.times(), rects: views.rects(), paused: paused, speed: speed,
                    renderMs: painter.renderMs(), fps: fps, scale: painter.scale(), scaleMode: colours.scaleMode(),
                    mode: colours.mode() }, panels.asleep());
     ui.setRecording({ frames: panels.frame(), actions: panels.recordingCount(), full: panels.recordingFull(),
@@ -178,10 +175,9 @@ import { clothViews } from './draw/views.js';
 
   // Charts: a sample of each panel every SAMPLE_MS (charts.js) while the simulation runs, and
   // one for every frame stepped by hand.
-  function panelRms(i) { return reads[i].rms_strain; }
-  function panelMs(i) { return simMs[i]; }
+  function panelRms(i) { return panels.read(i).rms_strain; }
   function sampleCharts(every) {
-    if (charts.sample(performance.now(), panelRms, panelMs, every) && chartsOn) charts.draw();
+    if (charts.sample(performance.now(), panelRms, panels.simMs, every) && chartsOn) charts.draw();
   }
 
   function tick(nowMs) {
@@ -192,15 +188,24 @@ import { clothViews } from './draw/views.js';
     frameTimes.push(now);
     try {
       if (!paused && views.count()) {
-        const dt = reads[0].dt;
+        const dt = panels.read(0).dt;
         acc += gap;
-        const due = Math.min(Math.floor(acc / dt), MAX_CATCHUP);
-        const done = due > 0 ? simulate(due, FRAME_BUDGET_MS) : 0;
-        // What the budget or the catch-up cap left undone is dropped, not owed: a slow scene
-        // runs in slow motion (the readout says so) and input is handled every frame.
-        acc = done < due || Math.floor(acc / dt) > MAX_CATCHUP ? 0 : acc - done * dt;
         wanted += gap;
-        played += panels.asleep() ? gap : done * dt;
+        if (panels.remote) {
+          // Frames are asked for while the Worker is idle; a backlog past the catch-up cap is
+          // dropped, and what comes back is counted as it arrives.
+          acc = Math.min(acc, MAX_CATCHUP * dt);
+          const due = panels.idle() ? Math.floor(acc / dt) : 0;
+          if (due > 0) acc -= panels.request(due, FRAME_BUDGET_MS) * dt;
+          if (panels.asleep()) played += gap;
+        } else {
+          const due = Math.min(Math.floor(acc / dt), MAX_CATCHUP);
+          const done = due > 0 ? simulate(due, FRAME_BUDGET_MS) : 0;
+          // What the budget or the catch-up cap left undone is dropped, not owed: a slow scene
+          // runs in slow motion (the readout says so) and input is handled every frame.
+          acc = done < due || Math.floor(acc / dt) > MAX_CATCHUP ? 0 : acc - done * dt;
+          played += panels.asleep() ? gap : done * dt;
+        }
         sampleCharts(false);
       }
       if (dirty || capture.recording()) render();
@@ -212,25 +217,15 @@ import { clothViews } from './draw/views.js';
     readouts(nowMs);
   }
 
-  // ---- geometry and input ---------------------------------------------------
-
   // Pointers (input.js) become gestures (gestures.js) on the views below, and a gesture becomes
   // the panels' actions: applied at once in every panel and recorded at the current frame. A
   // person acting during a replay takes over.
   const gestures = clothGestures.create({
-    locate: views.locate, toWorld: views.toWorld,
-    pick: function (i, x, y, radiusCss) {
-      return !views.count() || !renderer.ok || i < 0 ? -1 : panels.nearest(i, x, y, radiusCss / views.pixelsPerMetre(i));
-    },
-    positionOf: function (i, k) {
-      const pos = panels.snap(Math.min(i, panels.count() - 1)).pos;
-      return [pos[2 * k], pos[2 * k + 1]];
-    },
+    locate: views.locate, toWorld: views.toWorld, pick: views.pick, positionOf: views.positionOf,
+    obstacleAt: views.obstacleAt, centreOf: views.centreOf,
     // Held by someone else: another pointer, or the scene's script (a replay's script lets go
     // when a person takes over, so its vertices can be grabbed then).
     isHeld: function (k) { return panels.held(k) && (panels.replayEnd() < 0 || gestures.holds(k)); },
-    obstacleAt: function (i, x, y) { return views.count() ? panels.obstacleUnder(i, x, y) : -1; },
-    centreOf: function (j) { const at = panels.snap(0).obstacle_at; return [at[2 * j], at[2 * j + 1]]; },
     bladeOn: function () { return bladeOn; },
     trail: function (x, y, start) {
       const r = canvas.getBoundingClientRect();
@@ -271,12 +266,18 @@ import { clothViews } from './draw/views.js';
   clothSeam.publish({
     panels: panels, views: views, scene: scene, canvas: canvas, renderer: renderer, charts: charts, ui: ui,
     painter: painter, colours: colours, files: files, bladeOn: function () { return bladeOn; },
-    status: function () { return { paused: paused, relayouts: relayouts, fps: fps, fpsAt: fpsAt, simMs: simMs.slice() }; },
+    status: function () { return { paused: paused, relayouts: relayouts, fps: fps, fpsAt: fpsAt, simMs: panels.times().slice() }; },
     render: render, setPaused: setPaused, advance: advance, setParam: settings.setParam, setSolver: settings.setSolver,
     setCutTool: setCutTool,
   });
 
-  // ---- start --------------------------------------------------------------
+  Object.assign(controls, clothControls.of({ scene: scene, settings: settings, colours: colours, files: files,
+                                            capture: capture, ui: ui }), {
+    pause: function () { setPaused(!paused); },
+    step: function () { setPaused(true); advance(1); sampleCharts(true); },
+    charts: function (on) { setCharts(on); },
+    cutTool: function (on) { setCutTool(on === undefined ? !bladeOn : on); },
+  });
 
   colours.show();
   // On a small stage (a phone) the charts start hidden: with the readouts they would take most

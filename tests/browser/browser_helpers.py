@@ -15,6 +15,18 @@ ARGS = ['--no-sandbox', '--enable-unsafe-swiftshader', '--disable-background-net
 VIEWPORT = {'width': 1000, 'height': 700}
 
 
+def page_url(query=''):
+    """dist/index.html with `query` ('?a=b', '#fragment' or both) and worker=0: the session on the
+    page's own thread, where the test seam's advance() and state() are synchronous (in a Web
+    Worker, the page's default, advance() returns a Promise: tests/browser/test_worker_page.py)."""
+    fragment = ''
+    if '#' in query:
+        query, fragment = query.split('#', 1)
+        fragment = '#' + fragment
+    query = query[1:] if query.startswith('?') else query
+    return DIST.as_uri() + '?worker=0' + ('&' + query if query else '') + fragment
+
+
 def free_vertex(state, cols, rows):
     """The middle vertex of the bottom row (free in every preset with rows > 1)."""
     k = (rows - 1) * cols + cols // 2

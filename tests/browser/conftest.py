@@ -11,7 +11,7 @@ import pathlib
 
 import pytest
 
-from browser_helpers import ARGS, DIST, ROOT, SYSTEM_CHROMIUM, VIEWPORT  # noqa: F401 (ROOT, DIST: used by test modules)
+from browser_helpers import ARGS, DIST, ROOT, SYSTEM_CHROMIUM, VIEWPORT, page_url  # noqa: F401 (ROOT, DIST: used by test modules)
 
 
 def pytest_collection_modifyitems(config, items):
@@ -81,7 +81,7 @@ def open_page(browser):
         context.route('**/*', route)
         page.on('console', lambda m: pg.errors.append('console: ' + m.text) if m.type == 'error' else None)
         page.on('pageerror', lambda e: pg.errors.append('pageerror: ' + str(e)))
-        page.goto(DIST.as_uri() + query)
+        page.goto(page_url(query))
         page.wait_for_function('window.clothApp && clothApp.info().frames >= 0')
         opened.append(pg)
         return pg

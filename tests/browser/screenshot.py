@@ -12,7 +12,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from browser_helpers import ARGS, DIST, ROOT, SYSTEM_CHROMIUM  # noqa: E402
+from browser_helpers import ARGS, DIST, ROOT, SYSTEM_CHROMIUM, page_url  # noqa: E402
 sys.path.insert(0, str(ROOT))
 from cloth.solvers import SOLVERS  # noqa: E402
 
@@ -31,7 +31,7 @@ def main():
             kwargs['executable_path'] = SYSTEM_CHROMIUM
         browser = p.chromium.launch(**kwargs)
         page = browser.new_page(viewport={'width': 1200, 'height': 720})
-        page.goto(DIST.as_uri() + '?preset=corners')
+        page.goto(page_url('?preset=corners'))
         page.wait_for_function('window.clothApp && clothApp.info().frames > 0')
         page.evaluate("(m) => clothApp.setColorMode(m)", args.mode)
         if args.solver != 'jakobsen':

@@ -8,7 +8,7 @@ import random
 
 import pytest
 
-from browser_helpers import DIST, free_vertex, near, load_paused
+from browser_helpers import DIST, free_vertex, near, load_paused, page_url
 
 from cloth.keys import MODEL, spec
 from cloth.measure import BINS_PER_DECADE
@@ -175,7 +175,7 @@ def test_an_unknown_url_option_gets_a_note_and_the_defaults(open_page):
     for query, expect in [('?preset=toString', 'preset'), ('?preset=constructor', 'preset'),
                           ('?preset=__proto__', 'preset'), ('?preset=bogus', 'preset'),
                           ('?paused=maybe', 'paused'), ('?webgl=9', 'webgl'), ('?colour=red', 'colour')]:
-        pg.goto(DIST.as_uri() + query)
+        pg.goto(page_url(query))
         pg.wait_for_function('() => !!window.clothApp')
         info = pg.info()
         assert info['preset'] == 'curtain' and not info['paused'] and info['webgl'] > 0, query
@@ -185,17 +185,17 @@ def test_an_unknown_url_option_gets_a_note_and_the_defaults(open_page):
         assert pg.info()['preset'] == 'chain' and pg.locator('#fatal').is_hidden()
     # a value in another case is the same value; an option given twice says so; a flood of
     # unknown options gives a few notes, not a wall of text
-    pg.goto(DIST.as_uri() + '?preset=Chain&paused=TRUE')
+    pg.goto(page_url('?preset=Chain&paused=TRUE'))
     pg.wait_for_function('() => !!window.clothApp')
     assert pg.info()['preset'] == 'chain' and pg.info()['paused'] and pg.info()['note'] == ''
-    pg.goto(DIST.as_uri() + '?preset=chain&preset=corners')
+    pg.goto(page_url('?preset=chain&preset=corners'))
     pg.wait_for_function('() => !!window.clothApp')
     assert pg.info()['preset'] == 'corners' and 'more than once' in pg.info()['note']
-    pg.goto(DIST.as_uri() + '?' + '&'.join('x%d=1' % i for i in range(300)))
+    pg.goto(page_url('?' + '&'.join('x%d=1' % i for i in range(300))))
     pg.wait_for_function('() => !!window.clothApp')
     assert 'and 296 more' in pg.info()['note'] and len(pg.info()['note']) < 600
     for query in ['?paused=true', '?paused=1', '?paused=yes']:
-        pg.goto(DIST.as_uri() + query)
+        pg.goto(page_url(query))
         pg.wait_for_function('() => !!window.clothApp')
         assert pg.info()['paused'] and pg.info()['note'] == '', query
 

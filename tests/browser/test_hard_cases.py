@@ -10,7 +10,7 @@ import pytest
 from cloth.keys import MODEL
 from cloth.presets import preset_scene
 
-from conftest import DIST
+from browser_helpers import page_url
 
 
 @pytest.fixture(scope='module')
@@ -19,7 +19,7 @@ def page(browser):
     pg = context.new_page()
     errors = []
     pg.on('pageerror', lambda e: errors.append(str(e)))
-    pg.goto(DIST.as_uri())
+    pg.goto(page_url())
     pg.wait_for_function('() => !!(window.clothCore && window.clothApp)')
     pg.evaluate('clothApp.setPaused(true)')
     yield pg

@@ -20,7 +20,8 @@ from cloth.scene import SceneError
 from cloth.solvers import SOLVERS, DEFAULT_SOLVER
 
 from catalogue import CATALOGUE
-from conftest import DIST, ROOT
+from conftest import ROOT
+from browser_helpers import page_url
 
 
 @pytest.fixture(scope='module')
@@ -28,7 +29,7 @@ def core(browser):
     """One page for the whole module: parity runs are pure, so they can share it."""
     context = browser.new_context()
     page = context.new_page()
-    page.goto(DIST.as_uri())
+    page.goto(page_url())
     page.wait_for_function('() => !!(window.clothCore && window.clothApp)')
     page.evaluate('clothApp.setPaused(true)')
 

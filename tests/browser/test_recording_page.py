@@ -14,7 +14,7 @@ import sys
 import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-from browser_helpers import DIST, ROOT, bytes_under, wait_until, load_paused
+from browser_helpers import DIST, ROOT, bytes_under, wait_until, load_paused, page_url
 
 from cloth.hands import HAND_FORCE, HAND_STIFFNESS
 
@@ -374,7 +374,7 @@ def test_a_link_opened_in_a_new_page_stops_at_the_same_positions(open_page):
     pg = open_page()
     end_positions, text = make_recording(pg)
     url = pg.js('clothApp.link()')
-    assert url.startswith(DIST.as_uri() + '#scene=')
+    assert url.startswith(page_url('#scene='))
     other = open_page()
     other.goto(url)
     wait_until(other, 'window.clothApp && clothApp.info().replay.ended')
@@ -390,8 +390,8 @@ def test_a_broken_or_truncated_link_says_so_and_shows_the_default(open_page):
     half = url[:len(url) // 2]
     # half a link: cut short where base64url cannot end, or damaged where it decodes
     for bad, words in [(half, 'cut short' if len(half.split('#scene=')[1]) % 4 == 1 else 'does not decompress'),
-                       (DIST.as_uri() + '#scene=@@@', 'base64url'),
-                       (DIST.as_uri() + '#scene-json=' + 'e30', 'cols: missing')]:
+                       (page_url('#scene=@@@'), 'base64url'),
+                       (page_url('#scene-json=' + 'e30'), 'cols: missing')]:
         other = open_page()
         other.goto(bad)
         wait_until(other, '!clothApp.info().linkPending')

@@ -9,13 +9,10 @@ import math
 
 import pytest
 
-from catalogue import RECORDINGS
+from catalogue import RECORDINGS, PLAYED
 from cloth.api import run
 
 FILES = sorted(RECORDINGS)
-# The frames compared with CPython: every op a recording holds has happened by then
-# (tests/test_recordings.py checks it), and CPython takes about 0.1 s a frame of 30x30.
-PLAYED = 100
 
 
 @pytest.mark.parametrize('name', FILES)

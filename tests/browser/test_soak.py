@@ -11,9 +11,8 @@ import os
 import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-from conftest import DIST
 from cloth.keys import MODEL
-from browser_helpers import steady_bytes_per_frame
+from browser_helpers import page_url, steady_bytes_per_frame
 
 SOAK_FRAMES = int(os.environ.get('CLOTH_SOAK_FRAMES', '10000'))
 BATCH = 1000
@@ -26,7 +25,7 @@ def app(browser):
     errors = []
     page.on('pageerror', lambda e: errors.append(str(e)))
     page.on('console', lambda m: errors.append(m.text) if m.type == 'error' else None)
-    page.goto(DIST.as_uri())
+    page.goto(page_url())
     page.wait_for_function('() => !!(window.clothCore && window.clothApp)')
     page.evaluate('clothApp.setPaused(true)')
     # Nothing a pointer or a key does may leave the page (a dropped file or text, a link).

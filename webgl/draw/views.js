@@ -1,13 +1,15 @@
 // The panels as the canvas shows them: each panel's snapshot (sim/panels.js) with its renderer
 // panel (renderer.js), their rectangles in the canvas (stage.js), and what a pointer there
-// points at. Made anew for every scene loaded; laid out again on every change of size.
+// points at (the vertex or obstacle under it, as the snapshot has them: gestures.js's view).
+// Made anew for every scene loaded; laid out again on every change of size.
 import { clothStage } from './stage.js';
 
 export const clothViews = (function () {
   const stage = clothStage;
 
-  // canvas, renderer (renderer.js), band() (the CSS px the overlays take below the panels).
-  function create(canvas, renderer, band) {
+  // canvas, renderer (renderer.js), band() (the CSS px the overlays take below the panels),
+  // panels (sim/panels.js or remote.js).
+  function create(canvas, renderer, band, panels) {
     let list = [], rects = [], view = null;
 
     // The panels' snapshots, shown in the world box `shown` ({x0, x1, y0, y1}).
@@ -36,8 +38,17 @@ export const clothViews = (function () {
       // A pointer at client px -> {panel (-1: none), x, y (world metres there)}.
       locate: function (x, y) { return renderer.ok ? stage.locate(canvas, list, x, y) : { panel: -1, x: NaN, y: NaN }; },
       toWorld: function (i, x, y) { return stage.toWorld(canvas, list[Math.min(i, list.length - 1)], x, y); },
-      // Panel i's pixels (CSS) per metre.
-      pixelsPerMetre: function (i) { return list[i].draw.pixelsPerMetre(); },
+      // The vertex of panel i nearest world (x, y) within radiusCss CSS px, or -1.
+      pick: function (i, x, y, radiusCss) {
+        return !list.length || !renderer.ok || i < 0 ? -1 : panels.nearest(i, x, y, radiusCss / list[i].draw.pixelsPerMetre());
+      },
+      positionOf: function (i, k) {
+        const pos = list[Math.min(i, list.length - 1)].snap.pos;
+        return [pos[2 * k], pos[2 * k + 1]];
+      },
+      // The obstacle under world (x, y) in panel i (-1: none), and where obstacle j is going.
+      obstacleAt: function (i, x, y) { return list.length ? panels.obstacleUnder(i, x, y) : -1; },
+      centreOf: function (j) { const at = list[0].snap.obstacle_at; return [at[2 * j], at[2 * j + 1]]; },
       // A world point of panel i in canvas CSS px.
       toCanvas: function (i, x, y) { return list[i].draw.toCanvas(x, y); },
     };

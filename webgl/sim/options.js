@@ -1,4 +1,4 @@
-// The page's URL options (?preset=, ?paused=, ?webgl=): parsed once at start, each
+// The page's URL options (?preset=, ?paused=, ?webgl=, ?worker=): parsed once at start, each
 // value checked against the values it can take. An unknown option or value is
 // never silently ignored: it comes back as a note, and the option keeps its default.
 // Lookups go through own properties only, so `?preset=toString` is just unknown.
@@ -11,12 +11,14 @@ export const clothOptions = (function () {
 
   const MAX_NOTES = 4;
 
-  // parse(search, presets) -> {preset, paused, webgl, notes: [text...]}. Values are matched
+  // parse(search, presets) -> {preset, paused, webgl, worker, notes: [text...]} (worker: run
+  // the simulation in a Web Worker, the default; 0 runs it on the page's own thread, which the
+  // tests' synchronous seam drives). Values are matched
   // without regard to case; an option given twice says so (the last one counts); at most
   // MAX_NOTES notes, then how many more.
   function parse(search, presets) {
     const q = new URLSearchParams(search);
-    const out = { preset: Object.keys(presets)[0], paused: false, webgl: 'auto', notes: [] };   // the first preset
+    const out = { preset: Object.keys(presets)[0], paused: false, webgl: 'auto', worker: true, notes: [] };
     const notes = [];
     const seen = {};
     function unknown(key, value, allowed) {
@@ -36,8 +38,11 @@ export const clothOptions = (function () {
       } else if (key === 'webgl') {
         if (own(WEBGL, v)) out.webgl = WEBGL[v];
         else unknown(key, value, 'auto, 2, 1, 0');
+      } else if (key === 'worker') {
+        if (own(FLAGS, v)) out.worker = FLAGS[v];
+        else unknown(key, value, '1, 0, true, false');
       } else {
-        notes.push('Unknown URL option ' + JSON.stringify(key).slice(0, 40) + ' ignored (known: preset, paused, webgl)');
+        notes.push('Unknown URL option ' + JSON.stringify(key).slice(0, 40) + ' ignored (known: preset, paused, webgl, worker)');
       }
     });
     out.notes = notes.slice(0, MAX_NOTES);

@@ -21,6 +21,7 @@ export const clothPanels = (function () {
     // list[i]: {cloth, run (runner.js: ops and batch timing), snap (what the renderer draws),
     // read (what the readouts say: clothCore.readings), simMs}
     let list = [];
+    let reads = [], times = [];    // each panel's readings and sim time (ms a frame), in order
     let ran = false;           // the last simulate() applied some of the scripts' actions
     let stale = false;         // a gesture or setting changed the cloths since the last measure
 
@@ -33,6 +34,8 @@ export const clothPanels = (function () {
         return { cloth: cloth, run: runner.panel(sess, i), snap: core.snapshot(cloth), read: core.readings(cloth),
                  simMs: NaN };
       });
+      reads = list.map(function (p) { return p.read; });
+      times = list.map(function () { return NaN; });
       measure();
     }
 
@@ -68,14 +71,19 @@ export const clothPanels = (function () {
       stale = false;
     }
 
-    // Before a drawing: the snapshots, measured again if a gesture changed the cloths (once a
-    // drawing, not once a pointer event).
-    function refresh() {
-      if (stale) { measure(); return; }
+    // The snapshots and readings of the cloths as they are.
+    function snapshots() {
       for (let i = 0; i < list.length; i++) {
         core.snapshot(list[i].cloth, list[i].snap);
         core.readings(list[i].cloth, list[i].read);
       }
+    }
+
+    // Before a drawing: the snapshots, measured again if a gesture changed the cloths (once a
+    // drawing, not once a pointer event).
+    function refresh() {
+      if (stale) measure();
+      else snapshots();
     }
 
     // Runs up to n frames in every panel; with a budget (ms), stops once it is spent (at least
@@ -89,7 +97,7 @@ export const clothPanels = (function () {
       if (asleep()) {
         // At rest: nothing to step or measure until an operation wakes them.
         session.framesRan(sess, n, from);
-        for (let i = 0; i < list.length; i++) { list[i].run.frame += n; list[i].simMs = NaN; }
+        for (let i = 0; i < list.length; i++) { list[i].run.frame += n; list[i].simMs = NaN; times[i] = NaN; }
         return n;
       }
       const each = list.length > 1 ? budgetMs / list.length : budgetMs;
@@ -101,6 +109,7 @@ export const clothPanels = (function () {
         const p = list[i];
         const ms = p.cloth.asleep ? NaN : p.run.ms / done;
         p.simMs = Number.isFinite(p.simMs) && Number.isFinite(ms) ? p.simMs + EMA * (ms - p.simMs) : ms;
+        times[i] = p.simMs;
       }
       measure();
       return done;
@@ -111,13 +120,18 @@ export const clothPanels = (function () {
     function acted(did) { if (did) stale = true; return did; }
 
     return {
-      open: open, openNotes: openNotes, asleep: asleep, measure: measure, refresh: refresh, simulate: simulate,
+      remote: false,
+      open: open, openNotes: openNotes, asleep: asleep, measure: measure, refresh: refresh, snapshots: snapshots,
+      simulate: simulate,
       // Whether the last simulate() applied some of the scripts' actions.
       scriptRan: function () { return ran; },
       count: function () { return list.length; },
       snap: function (i) { return list[i].snap; },
       read: function (i) { return list[i].read; },
       simMs: function (i) { return list[i].simMs; },
+      // Every panel's readings, and sim times (arrays kept for the scene: read, never changed).
+      reads: function () { return reads; },
+      times: function () { return times; },
       // Panel i's running scene (its keys as the cloth has them now).
       scene: function (i) { return list[i].cloth.scene; },
       // What the settings panel shows: the keys of a cloth that follows the scene's settings
@@ -148,6 +162,8 @@ export const clothPanels = (function () {
       change: function (keysText) { session.change(sess, keysText); stale = true; },
       unusedNote: function () { return core.notes(sess.base).unused; },
       recordingText: function () { return session.recordingText(sess); },
+      // then(text): the recording (at once here; later from a Worker, remote.js).
+      recording: function (then) { then(session.recordingText(sess)); },
       recordingCount: function () { return session.recordingCount(sess); },
       recordingFull: function () { return session.recordingFull(sess); },
       recordingComplete: function () { return session.recordingComplete(sess); },

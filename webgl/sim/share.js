@@ -238,9 +238,10 @@ export const clothShare = (function () {
 
   // Copy link: the link that replays `text`, copied from the key or click handler itself
   // (copyLater: WebKit's clipboard needs the person's task). A link longer than MAX_LINK is
-  // not copied: the note offers Export. A Promise of the link.
+  // not copied: the note offers Export. `text` may be a Promise of it (a Worker's recording).
+  // A Promise of the link.
   function copyLink(text, note) {
-    const made = linkFor(text);
+    const made = Promise.resolve(text).then(linkFor);
     const fits = made.then(function (url) {
       if (url.length > MAX_LINK) throw new Error('too long');
       return url;

@@ -19,18 +19,21 @@ export const clothFiles = (function () {
 
     // Restart the recording from frame 0 at real speed.
     function replay() {
-      app.load(panels.recordingText(), app.preset(), app.view());
-      ui.note(clothReadouts.replayNote(panels.replayEnd(), ''));
+      panels.recording(function (text) {
+        app.load(text, app.preset(), app.view());
+        ui.note(clothReadouts.replayNote(panels.replayEnd(), ''));
+      });
     }
 
     function exportRecording() {
-      return share.exportText(panels.recordingText(), share.fileName(app.preset(), app.comparing(),
-                                                                      panels.recordingComplete()), ui.note);
+      const name = share.fileName(app.preset(), app.comparing(), panels.recordingComplete());
+      panels.recording(function (text) { share.exportText(text, name, ui.note); });
     }
 
-    function link() { return share.linkFor(panels.recordingText()); }
+    // A Promise of the link that replays the recording.
+    function link() { return new Promise(function (resolve) { panels.recording(resolve); }).then(share.linkFor); }
 
-    function copyLink() { return share.copyLink(panels.recordingText(), ui.note); }
+    function copyLink() { return share.copyLink(new Promise(function (resolve) { panels.recording(resolve); }), ui.note); }
 
     // A picture's or a video's name: the preset (or 'scene') and the frame it starts at.
     function mediaName() { return 'cloth-' + (app.preset() || 'scene') + '-f' + panels.frame(); }

@@ -64,7 +64,9 @@ export const clothSeam = (function () {
       setPaused: app.setPaused,
       advance: app.advance,
       // The recording since the last load or reset, as scene JSON text with `frames`.
-      recording: panels.recordingText,
+      recording: function () {
+        return panels.remote ? new Promise(function (resolve) { panels.recording(resolve); }) : panels.recordingText();
+      },
       // A Promise of the link that replays the recording.
       link: app.files.link,
       replay: function () { app.files.replay(); return true; },
@@ -125,6 +127,8 @@ export const clothSeam = (function () {
           simMs: n ? st.simMs[0] : NaN, chartLatest: app.charts.latest(0),
           edges: c ? c.n_edges : 0, broken: c ? c.broken : 0,
           cutTool: app.bladeOn(),
+          // The session runs in a Web Worker (sim/remote.js), and has run every frame asked of it.
+          worker: !!panels.remote, idle: panels.remote ? panels.idle() : true,
           recorded: panels.recordingCount(), recordingFull: panels.recordingFull(),
           error: ui.errorText(), note: ui.noteText(), scene: scene.text(),
           canvas: [canvas.width, canvas.height], dpr: window.devicePixelRatio || 1,

@@ -18,7 +18,7 @@ import pytest
 HERE = pathlib.Path(__file__).absolute().parent
 sys.path.insert(0, str(HERE.parent))   # browser_helpers and the Chromium tests reused here
 
-from browser_helpers import DIST, ROOT  # noqa: E402,F401 (test_parity imports them from `conftest`)
+from browser_helpers import DIST, ROOT, page_url  # noqa: E402,F401 (test_parity imports them from `conftest`)
 from engine_drivers import ENGINES, Xvfb, missing  # noqa: E402
 from engine_page import Page  # noqa: E402
 
@@ -99,7 +99,7 @@ def open_page(engine):
             engine.size = size
         pg = Page(engine, expect_errors)
         expected.append(expect_errors)
-        pg.goto(url or DIST.as_uri() + query)
+        pg.goto(url or page_url(query))
         return pg
 
     yield _open

@@ -16,7 +16,7 @@ import functools
 import json
 import sys
 
-from browser_helpers import DIST, ROOT, free_vertex, png_rgb
+from browser_helpers import DIST, ROOT, free_vertex, page_url, png_rgb
 import test_page
 import test_recording_page as rec
 import test_render
@@ -450,7 +450,7 @@ def test_record_export_link_and_replay_give_the_same_positions(open_page):
     assert path.read_text(encoding='utf-8') == text, 'the %s download' % pg.name
 
     url = pg.js('clothApp.link()')
-    assert url.startswith(DIST.as_uri() + '#scene=')            # deflate-raw: CompressionStream
+    assert url.startswith(page_url('#scene='))            # deflate-raw: CompressionStream
     other = open_page(url=url)
     other.wait_for_function('clothApp.info().replay.ended', timeout=60)
     assert other.info()['paused'] and other.info()['frames'] == recording['frames']
@@ -508,8 +508,8 @@ def test_a_broken_or_truncated_link_says_so_and_shows_the_default(open_page):
         cut += 1
     for bad, words in [(url.split('#')[0] + '#scene=' + data[:cut], 'does not decompress'),
                        (url.split('#')[0] + '#scene=' + data[:4 * (len(data) // 8) + 1], 'cut short'),
-                       (DIST.as_uri() + '#scene=@@@', 'base64url'),
-                       (DIST.as_uri() + '#scene-json=' + 'e30', 'cols: missing')]:
+                       (page_url('#scene=@@@'), 'base64url'),
+                       (page_url('#scene-json=' + 'e30'), 'cols: missing')]:
         other = open_page(url=bad)
         other.wait_for_function('!clothApp.info().linkPending')
         info = other.info()

@@ -1,0 +1,116 @@
+"""The session in a Web Worker (issue #42; webgl/sim/remote.js and worker.js), as the page runs
+by default: the page's thread turns input into messages and draws what the Worker posted.
+The rest of the suite drives the page with ?worker=0 (browser_helpers.page_url), where the test
+seam is synchronous; here advance() returns a Promise, which Playwright awaits."""
+import json
+
+from cloth.api import run
+from cloth.presets import preset_scene
+
+from browser_helpers import DIST, page_url
+
+
+def open_worker_page(browser, query='', init=None):
+    context = browser.new_context(viewport={'width': 1000, 'height': 700})
+    page = context.new_page()
+    errors = []
+    page.on('pageerror', lambda e: errors.append(str(e)))
+    page.on('console', lambda m: errors.append(m.text) if m.type == 'error' else None)
+    if init:
+        page.add_init_script(init)
+    page.goto(DIST.as_uri() + query)
+    page.wait_for_function('() => window.clothApp && clothApp.info().frames >= 0')
+    return context, page, errors
+
+
+def test_by_default_the_session_runs_in_a_worker_and_the_page_draws_it(browser):
+    context, page, errors = open_worker_page(browser)
+    try:
+        assert page.evaluate('clothApp.info().worker')
+        page.wait_for_function('() => clothApp.info().frames > 30')
+        page.evaluate('clothApp.setPaused(true)')
+        page.evaluate('clothApp.advance(0)')                       # the frames asked for, back
+        info = page.evaluate('clothApp.info()')
+        assert info['renders'] > 5 and info['error'] == '' and info['note'] == ''
+        # What the page shows is the preset's cloth at the frame it says, as CPython runs it.
+        shown = page.evaluate('clothApp.state().positions')
+        assert json.loads(run(info['scene'], info['frames'], False, -1))['positions'] == shown
+        assert errors == []
+    finally:
+        context.close()
+
+
+def test_a_recording_made_in_the_worker_replays_bit_for_bit_in_cpython(browser):
+    context, page, errors = open_worker_page(browser)
+    try:
+        scene = preset_scene('corners', 12, 12)
+        page.evaluate('(t) => { clothApp.loadScene(t); clothApp.setPaused(true); }', json.dumps(scene))
+        page.evaluate('clothApp.advance(70)')
+        k = 12 * 12 - 1
+        x, y = page.evaluate('(k) => clothApp.state().screen[k]', k)
+        page.mouse.move(x, y)
+        page.mouse.down()
+        for i in range(1, 9):
+            page.mouse.move(x + 6 * i, y - 4 * i)
+            page.evaluate('clothApp.advance(2)')
+        page.mouse.up()
+        page.evaluate('clothApp.advance(20)')
+        text = page.evaluate('clothApp.recording()')
+        shown = page.evaluate('clothApp.state().positions')
+        recorded = json.loads(text)
+        assert recorded['frames'] == page.evaluate('clothApp.info().frames') == 70 + 16 + 20
+        assert {a['op'] for a in recorded['actions']} >= {'grab', 'move', 'release'}
+        cpython = json.loads(run(text, None, False, -1))['positions']
+        assert cpython == shown
+        assert errors == []
+    finally:
+        context.close()
+
+
+def test_input_is_taken_while_the_worker_steps_a_large_cloth(browser):
+    """The page's thread is not the simulation's: a press on a 200x200 cloth is taken (the
+    vertex held, recorded) while the Worker is still busy with frames asked for before it."""
+    context, page, errors = open_worker_page(browser)
+    try:
+        scene = preset_scene('large', 200, 200)
+        page.evaluate('(t) => { clothApp.loadScene(t); clothApp.setPaused(true); }', json.dumps(scene))
+        page.evaluate('clothApp.advance(1)')
+        k = 200 * 200 - 100
+        x, y = page.evaluate('(k) => clothApp.state().screen[k]', k)
+        page.evaluate('() => { clothApp.advance(60, true); }')     # not awaited: the Worker is busy
+        assert not page.evaluate('clothApp.info().idle')
+        page.mouse.move(x, y)
+        page.mouse.down()
+        busy = not page.evaluate('clothApp.info().idle')
+        held = page.evaluate('(k) => clothApp.state().held[k]', k)
+        page.mouse.up()
+        assert held and busy
+        page.wait_for_function('() => clothApp.info().idle', timeout=120_000)
+        assert page.evaluate('clothApp.info().frames') == 61
+        assert errors == []
+    finally:
+        context.close()
+
+
+def test_where_a_worker_cannot_start_the_page_runs_as_before_and_says_so(browser):
+    context, page, errors = open_worker_page(browser, init='delete window.Worker;')
+    try:
+        info = page.evaluate('clothApp.info()')
+        assert not info['worker']
+        assert 'could not start a Web Worker' in info['note']
+        page.evaluate('clothApp.setPaused(true)')
+        frames = page.evaluate('clothApp.info().frames')
+        assert page.evaluate('clothApp.advance(10)') == frames + 10      # on the page's thread
+        assert errors == []
+    finally:
+        context.close()
+
+
+def test_worker_0_runs_the_session_on_the_pages_thread(browser):
+    context, page, errors = open_worker_page(browser, query='?worker=0')
+    try:
+        assert not page.evaluate('clothApp.info().worker')
+        assert page.evaluate('clothApp.info().note') == ''
+        assert page.url == page_url()
+    finally:
+        context.close()

@@ -1,0 +1,144 @@
+// The panels with their session in a Web Worker (worker.js): the page's thread turns gestures
+// and settings into messages and draws the latest state the Worker posted, so a heavy cloth
+// slows the simulation (the readout says slow motion), never the input or the drawing.
+//
+// The same functions as panels.js. Beside the Worker the page keeps the same session opened
+// from the same text, never stepped: a mirror into which each message's arrays and numbers are
+// copied, whose scripts follow the Worker's frames, and to which gestures and settings are
+// applied too, so that what the page asks synchronously (a setting refused, the scene's keys,
+// which vertex is under a pointer, who holds it) is answered at once from the state it shows.
+// What only the Worker knows comes later: the recording's text (recording(then)).
+import { clothCore } from './core.js';
+import { clothPanels } from './panels.js';
+
+export const clothRemote = (function () {
+  const core = clothCore, session = core.session;
+  const ARRAYS = ['pos', 'edge_value', 'stress', 'pinned', 'fixed', 'held', 'target', 'obstacle_at', 'obstacle_to'];
+  const NUMBERS = ['rms_strain', 'max_strain', 'high_value', 'max_value', 'max_stress', 'imbalance', 'n_struct',
+                   'n_edges', 'broken', 'substeps', 'iterations', 'corrections'];
+
+  // Starts the Worker from the page's inline scripts: the core's (id cloth-core) and the
+  // Worker's (id cloth-worker: build.py). Returns null where a Worker cannot start (the page
+  // then runs panels.js itself). arrived(done): a message brought `done` more frames (0:
+  // gestures or settings); failed(message): the Worker reported an error.
+  function start(arrived, failed) {
+    let worker;
+    try {
+      const source = document.getElementById('cloth-core').textContent + '\n' +
+        document.getElementById('cloth-worker').textContent;
+      worker = new Worker(URL.createObjectURL(new Blob([source], { type: 'text/javascript' })));
+    } catch (e) {
+      return null;
+    }
+    const local = clothPanels.create();
+    let inFlight = 0;            // step requests not yet answered
+    let asleep = false, atEnd = false, ran = false, recorded = 0, full = false, complete = false;
+    let replayEnd = -1, replayEnded = false, opened = false;
+    let generation = 0;          // the scene opened last: a state posted for an older one is dropped
+    let simMs = [];
+    const waiting = {};          // recording requests: id -> then(text)
+    let nextId = 1;
+    const idleWaiters = [];
+
+    function post(msg) { worker.postMessage(msg); }
+    function whenIdle() { return new Promise(function (resolve) { if (inFlight === 0) resolve(); else idleWaiters.push(resolve); }); }
+
+    worker.onerror = function (e) { e.preventDefault(); failed('the simulation\'s Worker stopped: ' + (e.message || 'error')); };
+    worker.onmessage = function (e) {
+      const m = e.data;
+      if (m.op === 'recording') { const then = waiting[m.id]; delete waiting[m.id]; if (then) then(m.text); return; }
+      if (m.op === 'error') { failed(m.message); return; }
+      if (m.op !== 'state' || !opened || m.generation !== generation) return;
+      if (m.step) inFlight--;
+      if (m.done > 0 || m.scriptRan) follow(m);
+      const s = local.session();
+      for (let i = 0; i < m.panels.length && i < local.count(); i++) {
+        const c = local.cloth(i), p = m.panels[i];
+        if (p.edge_a) { c.edge_a.set(p.edge_a); c.edge_b.set(p.edge_b); c.degree.set(p.degree); }
+        for (let j = 0; j < ARRAYS.length; j++) c[ARRAYS[j]].set(p[ARRAYS[j]]);
+        for (let j = 0; j < NUMBERS.length; j++) c[NUMBERS[j]] = p[NUMBERS[j]];
+        c.asleep = p.asleep;
+        simMs[i] = p.simMs;
+      }
+      if (m.person) s.person.set(m.person);
+      s.replay_end = m.replayEnd; s.replay_ended = m.replayEnded;
+      asleep = m.asleep; atEnd = atEnd || m.atEnd; ran = ran || m.scriptRan;
+      recorded = m.recorded; full = m.full; complete = m.complete;
+      replayEnd = m.replayEnd; replayEnded = m.replayEnded;
+      local.snapshots();
+      arrived(m.done);
+      if (inFlight === 0) while (idleWaiters.length) idleWaiters.shift()();
+    };
+
+    // The mirror's scripts follow the Worker's frames: their actions up to the frame it
+    // reached (a scripted set changes the scene's keys the settings panel shows; a scripted
+    // grab takes a vertex from a person's hand).
+    function follow(m) {
+      const s = local.session(), from = s.script_next[0];
+      for (let i = 0; i < local.count(); i++) {
+        const c = local.cloth(i);
+        if (s.script_next[i] < c.scene.actions.length) s.script_next[i] = core.applyDue(c, s.script_next[i], m.frame);
+      }
+      session.framesRan(s, m.frame - s.frame, from);
+    }
+
+    // A gesture or a setting: applied to the mirror at once (its answer is the page's) and
+    // sent to the Worker, which applies it at the frame it is at.
+    function gesture(op) {
+      return function () {
+        const args = Array.prototype.slice.call(arguments);
+        const did = local[op].apply(null, args);
+        if (did) post({ op: op, args: args });
+        return did;
+      };
+    }
+
+    const remote = Object.assign({}, local, {
+      remote: true,
+      open: function (text) {
+        local.open(text);              // throws the core's Error on a bad scene, as panels.js
+        opened = true;
+        asleep = false; atEnd = false; ran = false; inFlight = 0;
+        replayEnd = local.replayEnd(); replayEnded = false;
+        simMs = local.times().map(function () { return NaN; });
+        generation++;
+        post({ op: 'open', text: text, generation: generation });
+      },
+      // Frames run in the Worker: `n` more are asked for when it is idle (request); simulate()
+      // is not used in this mode.
+      idle: function () { return inFlight === 0; },
+      request: function (n, budgetMs) {
+        n = session.framesLeft(local.session(), n);
+        if (n <= 0 || inFlight > 0) return 0;
+        inFlight++;
+        post({ op: 'step', n: n, budget: budgetMs || 0 });
+        return n;
+      },
+      // A Promise that resolves once every frame asked for has come back.
+      whenIdle: whenIdle,
+      // A Promise: n frames run (all of them, no budget), once those asked for before are back.
+      run: function (n) { return whenIdle().then(function () { if (n > 0) remote.request(n, 0); return whenIdle(); }); },
+      asleep: function () { return asleep; },
+      scriptRan: function () { const r = ran; ran = false; return r; },
+      atReplayEnd: function () { const r = atEnd; atEnd = false; return r; },
+      replayEnd: function () { return replayEnd; },
+      replayEnded: function () { return replayEnded; },
+      simMs: function (i) { return simMs[i]; },
+      times: function () { return simMs; },
+      // The mirror is measured by the Worker: only its snapshots are brought up to date.
+      refresh: function () { local.snapshots(); },
+      measure: function () { local.snapshots(); },
+      grab: gesture('grab'), move: gesture('move'), release: gesture('release'),
+      togglePin: gesture('togglePin'), cut: gesture('cut'), obstacle: gesture('obstacle'),
+      change: function (keysText) { local.change(keysText); post({ op: 'change', keys: keysText }); },
+      recordingCount: function () { return recorded; },
+      recordingFull: function () { return full; },
+      recordingComplete: function () { return complete; },
+      // then(text): the recording as the Worker made it.
+      recording: function (then) { const id = nextId++; waiting[id] = then; post({ op: 'recording', id: id }); },
+    });
+    return remote;
+  }
+
+  return { start: start };
+})();
