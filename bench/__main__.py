@@ -11,6 +11,8 @@
     python -m bench --releases   every preset pulled and let go, and tapped: speeds, energy
                                  (bench/releases.py): releases.md, .json
     python -m bench --figures    the docs' other figures (bench/figures.py): figures.md, .json
+    python -m bench --worker     input against the simulation's thread: the session in a Worker
+                                 and on the page's thread (bench/worker.py): worker.md, .json
 
 Everything runs in the shipped page, dist/index.html, in headless Chromium.
 """
@@ -36,6 +38,7 @@ def main(argv=None):
     ap.add_argument('--fabrics', action='store_true', help='every fabric on the three presets')
     ap.add_argument('--releases', action='store_true', help='every preset pulled, let go, tapped')
     ap.add_argument('--figures', action='store_true', help='the docs\' other figures')
+    ap.add_argument('--worker', action='store_true', help='input with the session in a Worker and without')
     ap.add_argument('--sizes', default=None,
                     help='the front\'s grid sizes, comma-separated (default: 30,60,120,200)')
     ap.add_argument('--out', default=os.path.join(ROOT, 'bench', 'results'),
@@ -80,6 +83,10 @@ def dispatch(args, page, progress, meta):
         from bench import releases
         rows = releases.run(page, args.quick, progress)
         return 'releases', releases.markdown(rows, meta), rows, []
+    if args.worker:
+        from bench import worker
+        rows = worker.run(page, args.quick, progress)
+        return 'worker', worker.markdown(rows, meta), rows, []
     if args.figures:
         from bench import figures
         rows = figures.run(page, args.quick, progress)

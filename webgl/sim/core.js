@@ -111,6 +111,13 @@ export const clothCore = (function (api) {
     out.target = cloth.target;
     return out;
   };
+  // What a Worker posts of each panel's cloth after a message (sim/worker.js) and the page copies
+  // into its mirror of it (sim/remote.js): the arrays the drawing and the picking read, the
+  // edges when they changed (a tear, a cut), and the numbers the readings hold.
+  core.MIRRORED = ['pos', 'edge_value', 'stress', 'pinned', 'fixed', 'held', 'target', 'obstacle_at', 'obstacle_to'];
+  core.MIRRORED_EDGES = ['edge_a', 'edge_b', 'degree'];
+  core.MIRRORED_NUMBERS = ['rms_strain', 'max_strain', 'high_value', 'max_value', 'max_stress', 'imbalance', 'n_struct',
+                           'n_edges', 'broken', 'substeps', 'iterations', 'corrections', 'asleep'];
   // What the readouts, the legend and the loop read of a cloth: cloth/measure.py's measures,
   // the solver's balance, the grid, the step and what runs, copied into `out` (made once per
   // panel: numbers and the scene's words, no allocation). Apart from the snapshot, whose shape

@@ -13,9 +13,7 @@ import { clothPanels } from './panels.js';
 
 export const clothRemote = (function () {
   const core = clothCore, session = core.session;
-  const ARRAYS = ['pos', 'edge_value', 'stress', 'pinned', 'fixed', 'held', 'target', 'obstacle_at', 'obstacle_to'];
-  const NUMBERS = ['rms_strain', 'max_strain', 'high_value', 'max_value', 'max_stress', 'imbalance', 'n_struct',
-                   'n_edges', 'broken', 'substeps', 'iterations', 'corrections'];
+  const ARRAYS = core.MIRRORED, EDGES = core.MIRRORED_EDGES, NUMBERS = core.MIRRORED_NUMBERS;
 
   // Starts the Worker from the page's inline scripts: the core's (id cloth-core) and the
   // Worker's (id cloth-worker: build.py). Returns null where a Worker cannot start (the page
@@ -54,10 +52,9 @@ export const clothRemote = (function () {
       const s = local.session();
       for (let i = 0; i < m.panels.length && i < local.count(); i++) {
         const c = local.cloth(i), p = m.panels[i];
-        if (p.edge_a) { c.edge_a.set(p.edge_a); c.edge_b.set(p.edge_b); c.degree.set(p.degree); }
+        if (p.edges) for (let j = 0; j < EDGES.length; j++) c[EDGES[j]].set(p[EDGES[j]]);
         for (let j = 0; j < ARRAYS.length; j++) c[ARRAYS[j]].set(p[ARRAYS[j]]);
         for (let j = 0; j < NUMBERS.length; j++) c[NUMBERS[j]] = p[NUMBERS[j]];
-        c.asleep = p.asleep;
         simMs[i] = p.simMs;
       }
       if (m.person) s.person.set(m.person);

@@ -11,11 +11,7 @@ import { clothCore } from './core.js';
 import { clothPanels } from './panels.js';
 
 export const clothWorker = (function () {
-  // The arrays of a panel's cloth the page draws and picks from, copied into each message.
-  const MIRRORED = ['pos', 'edge_value', 'stress', 'pinned', 'fixed', 'held', 'target', 'obstacle_at', 'obstacle_to'];
-  // ... and the numbers.
-  const NUMBERS = ['rms_strain', 'max_strain', 'high_value', 'max_value', 'max_stress', 'imbalance', 'n_struct',
-                   'n_edges', 'broken', 'substeps', 'iterations', 'corrections'];
+  const ARRAYS = clothCore.MIRRORED, EDGES = clothCore.MIRRORED_EDGES, NUMBERS = clothCore.MIRRORED_NUMBERS;
 
   function serve(scope) {
     const panels = clothPanels.create();
@@ -38,11 +34,12 @@ export const clothWorker = (function () {
       const s = panels.session();
       if (all || out.scriptRan) out.person = copy(s.person);
       for (let i = 0; i < panels.count(); i++) {
-        const c = panels.cloth(i), p = { asleep: !!c.asleep, simMs: panels.simMs(i) };
-        MIRRORED.forEach(function (k) { p[k] = copy(c[k]); });
+        const c = panels.cloth(i), p = { simMs: panels.simMs(i), edges: false };
+        ARRAYS.forEach(function (k) { p[k] = copy(c[k]); });
         NUMBERS.forEach(function (k) { p[k] = c[k]; });
         if (all || edgesSent[i] !== c.broken) {
-          p.edge_a = copy(c.edge_a); p.edge_b = copy(c.edge_b); p.degree = copy(c.degree);
+          EDGES.forEach(function (k) { p[k] = copy(c[k]); });
+          p.edges = true;
           edgesSent[i] = c.broken;
         }
         out.panels.push(p);

@@ -1,0 +1,107 @@
+"""The page's thread with the session in a Web Worker and without it (`python -m bench
+--worker`): does input wait for the simulation?
+
+For each mode (the Worker, the page's default; ?worker=0, the session on the page's thread) and
+each size of Large cloth (71x71, and 200x200: about 8x the vertices and the work a frame), the
+shipped page runs the cloth live for a warm-up, then a pointer drags a vertex for RUN_SECONDS,
+one move an animation frame. Measured in the page:
+- **latency**: from a pointer event (its timeStamp) to the start of the next animation frame
+  after the page handled it (the frame that draws what the move did), median and 95th
+  percentile, ms;
+- **busy**: the share of the run the page's thread spent in tasks longer than 50 ms (the Long
+  Tasks API): time in which input and drawing wait;
+- **fps**: frames drawn per second; **sim/s**: simulated seconds per second (below 1: slow
+  motion).
+"""
+
+import json
+
+from cloth.presets import preset_scene
+from bench.page import DIST
+
+SIZES = [71, 200]
+QUICK_SIZES = [30, 85]
+RUN_SECONDS = 4.0
+QUICK_RUN_SECONDS = 1.5
+WARM_SECONDS = 1.5
+
+PROBE = '''() => {
+  const out = window.__probe = { lat: [], longMs: 0, frames: 0, t0: performance.now(), f0: clothApp.info().frames };
+  let pending = [];
+  window.addEventListener('pointermove', (e) => { pending.push(e.timeStamp); }, true);
+  new PerformanceObserver((list) => { for (const e of list.getEntries()) out.longMs += e.duration; })
+    .observe({ type: 'longtask' });
+  function frame(t) {
+    for (const s of pending) out.lat.push(t - s);
+    pending = [];
+    out.frames++;
+    requestAnimationFrame(frame);
+  }
+  requestAnimationFrame(frame);
+}'''
+
+
+def measure(browser, worker, n, seconds):
+    page = browser.new_page(viewport={'width': 1000, 'height': 700})
+    errors = []
+    page.on('pageerror', lambda e: errors.append(str(e)))
+    page.goto('file://%s?worker=%d' % (DIST, 1 if worker else 0))
+    page.wait_for_function('() => window.clothApp && clothApp.info().frames >= 0')
+    page.evaluate('(t) => clothApp.loadScene(t)', json.dumps(preset_scene('large', n, n)))
+    page.wait_for_timeout(WARM_SECONDS * 1000)
+    k = n * n - n // 2 - 1
+    x, y = page.evaluate('(k) => clothApp.state().screen[k]', k)
+    page.mouse.move(x, y)
+    page.mouse.down()
+    page.evaluate(PROBE)
+    steps = int(seconds * 60)
+    for i in range(steps):
+        page.mouse.move(x + 120 * i / steps, y + 60 * i / steps)
+        page.evaluate('() => new Promise((r) => requestAnimationFrame(() => r()))')
+    page.mouse.up()
+    p = page.evaluate('''() => { const p = window.__probe, t = performance.now() - p.t0;
+        return { lat: p.lat, longMs: p.longMs, ms: t, frames: p.frames,
+                 simulated: (clothApp.info().frames - p.f0) / 60, worker: clothApp.info().worker }; }''')
+    page.close()
+    lat = sorted(p['lat'])
+    pick = (lambda q: lat[min(len(lat) - 1, int(q * len(lat)))] if lat else float('nan'))
+    return {'mode': 'worker' if p['worker'] else 'page thread', 'n': n, 'median': pick(0.5), 'p95': pick(0.95),
+            'busy': p['longMs'] / p['ms'], 'fps': 1000 * p['frames'] / p['ms'],
+            'speed': p['simulated'] / (p['ms'] / 1000), 'moves': len(lat), 'seconds': seconds, 'errors': errors}
+
+
+def run(page, quick, progress):
+    browser = page.context.browser
+    sizes = QUICK_SIZES if quick else SIZES
+    seconds = QUICK_RUN_SECONDS if quick else RUN_SECONDS
+    rows = []
+    for worker in (True, False):
+        for n in sizes:
+            progress('%s, Large cloth %dx%d' % ('worker' if worker else 'page thread', n, n))
+            rows.append(measure(browser, worker, n, seconds))
+    return rows
+
+
+def markdown(rows, meta):
+    lines = ['# Input and the simulation\'s thread', '',
+             '`python -m bench --worker` on %s, %s.' % (meta['date'], meta['machine']), '',
+             'Large cloth dragged for %g s, one pointer move an animation frame, with the session in a '
+             'Web Worker (the page\'s default) and on the page\'s thread (?worker=0). **latency**: a '
+             'pointer event to the next animation frame after it was handled (ms, median and 95th '
+             'percentile); **busy**: the share of the run in tasks over 50 ms on the page\'s thread; '
+             '**sim/s**: simulated seconds per second (slow motion below 1).' % rows[0]['seconds'], '',
+             '| mode | grid | latency median (ms) | latency p95 (ms) | busy | fps | sim/s | moves |',
+             '|---|---|---|---|---|---|---|---|']
+    for r in rows:
+        lines.append('| %s | %dx%d | %.1f | %.1f | %.0f%% | %.1f | %.2f | %d |' % (
+            r['mode'], r['n'], r['n'], r['median'], r['p95'], 100 * r['busy'], r['fps'], r['speed'], r['moves']))
+    by = {(r['mode'], r['n']): r for r in rows}
+    sizes = sorted({r['n'] for r in rows})
+    lines.append('')
+    for mode in ('worker', 'page thread'):
+        a, b = by.get((mode, sizes[0])), by.get((mode, sizes[-1]))
+        if a and b:
+            lines.append('- %s: %dx%d against %dx%d (%.1fx the vertices): latency p95 %.1f -> %.1f ms, busy %.0f%% -> %.0f%%, '
+                         'fps %.1f -> %.1f.' % (mode, b['n'], b['n'], a['n'], a['n'], (b['n'] / a['n']) ** 2,
+                                                a['p95'], b['p95'], 100 * a['busy'], 100 * b['busy'], a['fps'], b['fps']))
+    return '\n'.join(lines) + '\n'
