@@ -182,8 +182,14 @@ def test_touch_drag_and_double_tap_pin(open_page):
     for i in range(1, 9):
         px, py = x + 12 * i, y - 9 * i
         touch(cdp, 'touchMove', [(px, py)])
-    pg.wait_for_timeout(80)
+    # Touch moves are handled at the page's next animation frame (Chromium aligns them to it),
+    # which a busy machine can hold back past a fixed wait (CI, one run of many: the hand one
+    # move behind): wait for the last one to arrive, up to 10 s.
+    end = time.time() + 10
     st = pg.state()
+    while not near(st['hands'][k] or (0, 0), (px, py), TOL) and time.time() < end:
+        pg.wait_for_timeout(20)
+        st = pg.state()
     assert st['held'][k] and near(st['hands'][k], (px, py), TOL)
     touch(cdp, 'touchEnd', [])
     assert not pg.state()['held'][k]

@@ -77,7 +77,7 @@ def test_input_is_taken_while_the_worker_steps_a_large_cloth(browser):
         page.evaluate('clothApp.advance(1)')
         k = 200 * 200 - 100
         x, y = page.evaluate('(k) => clothApp.state().screen[k]', k)
-        page.evaluate('() => { clothApp.advance(60, true); }')     # not awaited: the Worker is busy
+        page.evaluate('() => { clothApp.advance(20, true); }')     # not awaited: the Worker is busy
         assert not page.evaluate('clothApp.info().idle')
         page.mouse.move(x, y)
         page.mouse.down()
@@ -86,7 +86,7 @@ def test_input_is_taken_while_the_worker_steps_a_large_cloth(browser):
         page.mouse.up()
         assert held and busy
         page.wait_for_function('() => clothApp.info().idle', timeout=120_000)
-        assert page.evaluate('clothApp.info().frames') == 61
+        assert page.evaluate('clothApp.info().frames') == 21
         assert errors == []
     finally:
         context.close()
@@ -112,5 +112,33 @@ def test_worker_0_runs_the_session_on_the_pages_thread(browser):
         assert not page.evaluate('clothApp.info().worker')
         assert page.evaluate('clothApp.info().note') == ''
         assert page.url == page_url()
+    finally:
+        context.close()
+
+
+def test_a_person_takes_over_a_replay_the_worker_plays(browser):
+    context, page, errors = open_worker_page(browser)
+    try:
+        scene = preset_scene('corners', 12, 12)
+        scene['frames'] = 600
+        page.evaluate('(t) => clothApp.loadScene(t)', json.dumps(scene))
+        page.wait_for_function('() => clothApp.info().frames > 20')
+        assert page.evaluate('clothApp.info().replay.playing')
+        k = 12 * 12 - 1
+        x, y = page.evaluate('(k) => clothApp.state().screen[k]', k)
+        page.mouse.move(x, y)
+        page.mouse.down()
+        page.mouse.move(x + 20, y + 10)
+        page.mouse.up()
+        assert 'took over the replay' in page.evaluate('clothApp.info().note')
+        page.evaluate('clothApp.setPaused(true)')
+        page.evaluate('clothApp.advance(0)')
+        info = page.evaluate('clothApp.info()')
+        assert not info['replay']['playing'] and info['frames'] < 600
+        # The recording is cut where the person took over, and replays what the Worker ran.
+        text = page.evaluate('clothApp.recording()')
+        assert json.loads(text)['frames'] == info['frames']
+        assert json.loads(run(text, None, False, -1))['positions'] == page.evaluate('clothApp.state().positions')
+        assert errors == []
     finally:
         context.close()

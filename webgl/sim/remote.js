@@ -31,8 +31,7 @@ export const clothRemote = (function () {
     const local = clothPanels.create();
     let inFlight = 0;            // step requests not yet answered
     let asleep = false, atEnd = false, ran = false, recorded = 0, full = false, complete = false;
-    let replayEnd = -1, replayEnded = false, opened = false;
-    let generation = 0;          // the scene opened last: a state posted for an older one is dropped
+    let generation = 0;          // the scene opened last (0: none): a state posted for another is dropped
     let simMs = [];
     const waiting = {};          // recording requests: id -> then(text)
     let nextId = 1;
@@ -46,7 +45,7 @@ export const clothRemote = (function () {
       const m = e.data;
       if (m.op === 'recording') { const then = waiting[m.id]; delete waiting[m.id]; if (then) then(m.text); return; }
       if (m.op === 'error') { failed(m.message); return; }
-      if (m.op !== 'state' || !opened || m.generation !== generation) return;
+      if (m.op !== 'state' || m.generation !== generation) return;
       if (m.step) inFlight--;
       if (m.done > 0 || m.scriptRan) follow(m);
       const s = local.session();
@@ -61,7 +60,6 @@ export const clothRemote = (function () {
       s.replay_end = m.replayEnd; s.replay_ended = m.replayEnded;
       asleep = m.asleep; atEnd = atEnd || m.atEnd; ran = ran || m.scriptRan;
       recorded = m.recorded; full = m.full; complete = m.complete;
-      replayEnd = m.replayEnd; replayEnded = m.replayEnded;
       local.snapshots();
       arrived(m.done);
       if (inFlight === 0) while (idleWaiters.length) idleWaiters.shift()();
@@ -94,9 +92,7 @@ export const clothRemote = (function () {
       remote: true,
       open: function (text) {
         local.open(text);              // throws the core's Error on a bad scene, as panels.js
-        opened = true;
         asleep = false; atEnd = false; ran = false; inFlight = 0;
-        replayEnd = local.replayEnd(); replayEnded = false;
         simMs = local.times().map(function () { return NaN; });
         generation++;
         post({ op: 'open', text: text, generation: generation });
@@ -118,8 +114,6 @@ export const clothRemote = (function () {
       asleep: function () { return asleep; },
       scriptRan: function () { const r = ran; ran = false; return r; },
       atReplayEnd: function () { const r = atEnd; atEnd = false; return r; },
-      replayEnd: function () { return replayEnd; },
-      replayEnded: function () { return replayEnded; },
       simMs: function (i) { return simMs[i]; },
       times: function () { return simMs; },
       // The mirror is measured by the Worker: only its snapshots are brought up to date.
