@@ -15,6 +15,7 @@ setPointerCapture throws and is skipped (input.js); everything after the event i
 import functools
 import json
 import sys
+import time
 
 from browser_helpers import DIST, ROOT, free_vertex, page_url, png_rgb
 import test_page
@@ -102,7 +103,12 @@ def test_the_harness_sees_what_goes_wrong_in_the_page(open_page, engine):
     assert any(e.startswith('unhandledrejection: ') and 'one rejection' in e for e in errors), errors
     assert any(e.startswith('csp: img-src') and 'example.invalid' in e for e in errors), errors
     if engine.name == 'firefox':
-        pg.wait_for_timeout(200)
+        # Firefox writes its log when it gets to it: 200 ms was not always enough on a busy
+        # machine (CI, one run of several), so wait for the line, up to 10 s.
+        end = time.time() + 10
+        while not ('JavaScript error: file://' in engine.log_text() and 'one uncaught error' in engine.log_text()) \
+                and time.time() < end:
+            pg.wait_for_timeout(50)
         assert 'JavaScript error: file://' in engine.log_text() and 'one uncaught error' in engine.log_text()
 
 
