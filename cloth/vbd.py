@@ -387,12 +387,27 @@ def assemble(cloth):
         dy = cloth.aim[ii + 1] - pos[ii + 1]
         kh = cloth.grip_k[i]
         reach = cloth.grip_f[i] / kh
-        s = kh / math.sqrt(1.0 + (dx * dx + dy * dy) / (reach * reach))
+        d2 = dx * dx + dy * dy
+        sh = math.sqrt(1.0 + d2 / (reach * reach))
+        s = kh / sh
         g[ii] -= s * dx
         g[ii + 1] -= s * dy
         o = (i * 9 + DIAG) * 3
-        A[o] += kh
-        A[o + 2] += kh
+        if d2 > reach * reach:
+            # The pull's own curvature, as the sweeps take it: k / s^3 along the pull, k / s
+            # across. With k along it the coarse problem held a far hand's patch as by a stiff
+            # spring, moving it HAND_FORCE / HAND_STIFFNESS a correction at most, and a
+            # 120x120 Two corners swung round by a hand trailed it by 17 cm for good.
+            d = sqrt(d2)
+            nx = dx / d
+            ny = dy / d
+            along = s / (sh * sh)
+            A[o] += s + (along - s) * nx * nx
+            A[o + 1] += (along - s) * nx * ny
+            A[o + 2] += s + (along - s) * ny * ny
+        else:
+            A[o] += kh
+            A[o + 2] += kh
     for i in range(n):
         if fixed[i] != 0:
             g[i + i] = 0.0
