@@ -110,8 +110,10 @@ def preset_scene(name, cols, rows):
         actions.append({'frame': CARRY_FRAMES, 'op': 'release', 'vertex': k})
         scene['actions'] = actions
     if name == 'towel':
-        scene['obstacles'] = [{'box': [0.5 * w * (1.0 - PEG), 0.0, 0.5 * w * (1.0 + PEG), PEG_HEIGHT],
-                               'friction': 0.5}]
+        # A towel one vertex wide (cols 1) hangs from a peg PEG of a spacing wide.
+        x0 = 0.5 * w * (1.0 - PEG) if w > 0.0 else -0.5 * PEG * h
+        x1 = 0.5 * w * (1.0 + PEG) if w > 0.0 else 0.5 * PEG * h
+        scene['obstacles'] = [{'box': [x0, 0.0, x1, PEG_HEIGHT], 'friction': 0.5}]
     if name == 'tearable':
         scene['tear'] = TEARABLE_STRAIN
     if name == 'flag':

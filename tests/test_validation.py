@@ -212,3 +212,21 @@ def test_cli_bad_input_is_one_line_and_nonzero(args, stdin, key):
     assert len(lines) == 1, done.stderr
     assert 'Traceback' not in done.stderr
     assert key in lines[0]
+
+
+def test_every_preset_opens_at_the_grids_the_page_allows():
+    """Each preset's scene is valid at the page's smallest and largest grids, a single row or
+    column included (a towel one vertex wide once had a peg of no width: "obstacles[0].box:
+    must have x1 > x0"), and its cloth stays finite through its first frames."""
+    from cloth.api import load
+    from cloth.keys import spec
+    from cloth.presets import PRESETS, preset_scene
+    from cloth.step import frame
+    lo, hi = spec('cols').field_lo, spec('cols').field_hi
+    assert (lo, hi) == (spec('rows').field_lo, spec('rows').field_hi)
+    for p in PRESETS:
+        for cols, rows in [(lo, lo), (lo, 2), (2, lo), (lo, hi), (hi, lo), (2, 2)]:
+            cloth = load(json.dumps(preset_scene(p[0], cols, rows)))
+            for _ in range(3):
+                frame(cloth)
+            assert all(v == v and abs(v) < 1e3 for v in cloth.pos), (p[0], cols, rows)

@@ -123,3 +123,34 @@ def test_the_compare_editor_reads_numbers_the_same_way(open_page):
     assert panel_scene()['damping'] == 1.5 and 'as 1.5' in note(pg)
     type_into(pg, sel, '\u22121')
     assert panel_scene()['damping'] == 0 and 'clamped to its minimum 0' in note(pg)
+
+
+def test_a_field_being_typed_in_keeps_its_text_while_a_script_sets_the_others(open_page):
+    """Two corners' script carries a clamp for its first 60 frames, and each scripted frame
+    shows the settings again: the field a person is typing in keeps what they typed (it once
+    went back to 30 every frame, and Enter applied the old value)."""
+    pg = open_page()
+    pg.select_option('#preset', 'corners')
+    pg.js('clothApp.setPaused(true)')
+    pg.fill('#cols', '')
+    pg.locator('#cols').press_sequentially('12')
+    f = pg.info()['frames']
+    pg.js('clothApp.advance(20)')
+    assert pg.info()['frames'] == f + 20 <= 60 and pg.input_value('#cols') == '12'
+    assert pg.input_value('#rows') == '30'                     # the others are shown as they are
+    pg.press('#cols', 'Enter')
+    assert pg.info()['params']['cols'] == 12
+
+
+def test_a_refused_setting_says_what_the_typed_text_became(open_page):
+    """A value clamped and then refused (its cost over the page's limit) shows both: the
+    clamp in the note, the refusal in the banner; no older setting's note stays beside them."""
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    type_into(pg, '#substeps', '-5')
+    assert 'minimum' in note(pg), note(pg)
+    hi = spec('substeps').field_hi
+    type_into(pg, '#substeps', '1e308')
+    assert pg.info()['error'].startswith('Setting not applied'), pg.info()['error']
+    assert 'maximum %d' % hi in note(pg) and 'minimum' not in note(pg), note(pg)
+    assert pg.info()['params']['substeps'] == 1

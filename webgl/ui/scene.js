@@ -73,14 +73,15 @@ export const clothScene = (function () {
     function scripted() {
       const gestures = app.gestures();
       gestures.held().forEach(function (h) { if (!panels.byPerson(h.k)) gestures.forget(h.k); });
-      showSettings();
+      showSettings(true);
       app.settings().followSets();
     }
 
-    // The settings panel shows what the scene's settings are now (the session's base cloth's).
-    function showSettings() {
+    // The settings panel shows what the scene's settings are now (the session's base cloth's);
+    // `typing`: but not in the field a person is typing in.
+    function showSettings(typing) {
       params = clothSettings.paramsOf(panels.baseScene());
-      ui.setParams(params);
+      ui.setParams(params, typing);
       ui.setSolver(params.solver);
     }
 

@@ -82,6 +82,7 @@ export const clothSettings = (function () {
         ui.error('Setting not applied: ' + e.message + ' (the cloth runs on as it was)', 'setting');
         ui.setParams(app.params());
         ui.setSolver(app.params().solver);
+        ui.note(note);   // what was typed became (a clamped value), not an older setting's note
         return;
       }
       if (followSets()) {
@@ -118,6 +119,7 @@ export const clothSettings = (function () {
         app.load(JSON.stringify(obj), preset, view, holds, edits);
       } catch (e) {
         ui.setParams(app.params());  // the banner shows why; the old scene runs on
+        ui.note(note);
         return;
       }
       holds.forEach(function (h) { if (h.k < 0) dropped.push('the held vertex at ' + m.place(h.was)); });

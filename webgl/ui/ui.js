@@ -274,13 +274,16 @@ export const clothUI = (function () {
     }
 
     const ui = {
-      setParams: function (p) {
+      // `typing`: a script or a replay changed the settings, and a field a person is typing in
+      // keeps what they typed (it applies when they press Enter or leave it).
+      setParams: function (p, typing) {
+        const focused = typing ? document.activeElement : null;
         fieldKeys.forEach(function (key) {
-          if (p[key] === undefined) return;
+          if (p[key] === undefined || $(key) === focused) return;
           // a key whose 0 means none (tearing): the field shows its placeholder, "off"
           $(key).value = LIMITS[key].off && !(p[key] > 0) ? '' : String(p[key]);
         });
-        if (p.material !== undefined) $('material').value = p.material;
+        if (p.material !== undefined && $('material') !== focused) $('material').value = p.material;
       },
       setCutTool: function (on) {
         $('btn-cut').setAttribute('aria-pressed', on ? 'true' : 'false');
