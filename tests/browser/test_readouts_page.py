@@ -92,3 +92,23 @@ def test_render_is_a_finished_drawing_and_says_so(open_page):
         '() => document.getElementById("r-render").parentElement.title')
     assert 'finish' in title and 'compositing' in title, title
     assert 'counted over the last second' in pg.js('() => document.getElementById("r-fps").parentElement.title')
+
+
+@pytest.mark.parametrize('size', [(1, 1), (30, 20)])
+def test_a_cloth_that_has_left_the_view_is_said_to_have(open_page, size):
+    """A cloth with nothing to hold it falls for good, out of the view: the grid readout says
+    so (the stage was empty under normal readouts), and says nothing while it is in view."""
+    from browser_helpers import wait_until
+    pg = open_page()
+    pg.js('clothApp.setPaused(true)')
+    obj = json.loads(pg.info()['scene'])
+    obj.update({'cols': size[0], 'rows': size[1], 'pins': []})
+    obj.pop('actions', None)
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps(obj))
+    away = 'document.getElementById("r-size").textContent.indexOf("left the view") >= 0'
+    pg.wait_for_timeout(400)
+    assert not pg.js(away) and pg.info()['frames'] == 0
+    pg.js('clothApp.advance(180)')                  # 3 s: 44 m down
+    wait_until(pg, away)
+    pg.keyboard.press('r')
+    wait_until(pg, '!(' + away + ')')

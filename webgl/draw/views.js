@@ -49,6 +49,15 @@ export const clothViews = (function () {
       // The obstacle under world (x, y) in panel i (-1: none), and where obstacle j is going.
       obstacleAt: function (i, x, y) { return list.length ? panels.obstacleUnder(i, x, y) : -1; },
       centreOf: function (j) { const at = list[0].snap.obstacle_at; return [at[2 * j], at[2 * j + 1]]; },
+      // Whether the cloth of panel i, in the box its readings give (lo_x, lo_y, hi_x, hi_y,
+      // world metres), is wholly outside the panel's rectangle.
+      offStage: function (i, r) {
+        const b = rects[i];
+        if (!renderer.ok || !b || !list[i]) return false;
+        const d = list[i].draw;
+        return d.canvasX(r.hi_x) < b.x || d.canvasX(r.lo_x) > b.x + b.w ||
+               d.canvasY(r.lo_y) < b.y || d.canvasY(r.hi_y) > b.y + b.h;
+      },
       // A world point of panel i in canvas CSS px.
       toCanvas: function (i, x, y) { return list[i].draw.toCanvas(x, y); },
     };

@@ -80,7 +80,8 @@ export const clothReadouts = (function () {
     ui.setAutoFloor(AUTO_FLOOR);
     // The readouts for `now`: {reads (the panels' readings), simMs (each panel's ms a frame,
     // NaN at rest), rects (the panels' rectangles), paused, speed (simulated over wall-clock
-    // time), renderMs, fps, scale, scaleMode, mode}; asleep: every panel is at rest.
+    // time), renderMs, fps, scale, scaleMode, mode, away (a panel's cloth is out of its view)};
+    // asleep: every panel is at rest.
     function show(now, asleep) {
       const c = now.reads[0], n = now.reads.length;
       const slow = !now.paused && now.speed < SLOW_MOTION;
@@ -91,7 +92,8 @@ export const clothReadouts = (function () {
         size: c.cols + '×' + c.rows + ' · ' + c.springs + (c.springs === 1 ? ' edge' : ' edges') +
           (c.broken > 0 ? ' left of ' + (c.springs + c.broken) : '') +
           (n > 1 ? ' · ' + n + ' panels' : '') + (asleep ? ' · at rest' : '') +
-          (slow ? ' · slow motion ×' + now.speed.toFixed(2) : ''),
+          (slow ? ' · slow motion ×' + now.speed.toFixed(2) : '') +
+          (now.away ? ' · the cloth has left the view (R resets it)' : ''),
       });
       const legend = legendOf(c, now.mode);
       ui.setLegend(now.scale, now.scaleMode === 'fixed' ? 'fixed'
