@@ -678,6 +678,15 @@ def test_the_legend_says_how_far_the_solver_is_from_balance(open_page):
     off = pg.js('clothApp.cloth().imbalance')
     said = pg.locator('#legend-note').inner_text()
     assert off <= REST_IMBALANCE and said.startswith('jersey · balanced'), (said, off)
+    # Off by more than a weight (the flag in its wind: 79 weights once read "7858.98%"), the
+    # legend says in motion, by how many weights.
+    pg.select_option('#preset', 'flag')
+    pg.js('clothApp.setPaused(true)')
+    pg.js('clothApp.advance(300)')
+    pg.wait_for_timeout(400)
+    off = pg.js('clothApp.cloth().imbalance')
+    said = pg.locator('#legend-note').inner_text()
+    assert off >= 10 and said == 'jersey · in motion: %d× its weight off balance' % round(off), (said, off)
     # the seed's method has no fabric and no balance to speak of: the legend says so
     pg.select_option('#solver', 'jakobsen')
     pg.wait_for_timeout(400)

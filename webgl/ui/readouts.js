@@ -25,8 +25,11 @@ export const clothReadouts = (function () {
     const s = clothScenes, name = s.materialOf(snap.scene.stretch, snap.scene.shear, snap.scene.density);
     const fabric = name === 'custom' ? snap.scene.stretch + ' N/m' : s.MATERIALS[name].label.split(' (')[0].toLowerCase();
     const off = snap.imbalance;
+    // Past a vertex's weight (a fluttering flag, a hard drag) a percentage reads as noise
+    // (7859%): the legend says in motion, and by how many weights.
     const balance = !(off > 0) ? 'balanced' : off <= core.schema().restImbalance ? 'balanced to ' + fmtPct(off)
-      : 'settling: ' + fmtPct(off) + ' off balance';
+      : off < 1 ? 'settling: ' + fmtPct(off) + ' off balance'
+      : 'in motion: ' + clothUI.fmt(off, off < 10 ? 1 : 0) + '× its weight off balance';
     return { name: what, note: fabric + ' · ' + balance };
   }
 
