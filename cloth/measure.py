@@ -36,11 +36,6 @@ def prepare(cloth):
     cloth.max_stress = 0.0
     cloth.max_strain = 0.0
     cloth.rms_strain = 0.0
-    # The box the cloth is in (the page says when it has left the view).
-    cloth.lo_x = 0.0
-    cloth.lo_y = 0.0
-    cloth.hi_x = 0.0
-    cloth.hi_y = 0.0
 
 
 def measure(cloth):
@@ -88,21 +83,7 @@ def measure(cloth):
             max_strain = strain
         sum2 += strain * strain
     max_q = 0.0
-    lo_x = pos[0]
-    hi_x = lo_x
-    lo_y = pos[1]
-    hi_y = lo_y
     for k in range(n):
-        x = pos[k + k]
-        y = pos[k + k + 1]
-        if x < lo_x:
-            lo_x = x
-        if x > hi_x:
-            hi_x = x
-        if y < lo_y:
-            lo_y = y
-        if y > hi_y:
-            hi_y = y
         if degree[k] > 0:
             q = stress[k] / degree[k]
             stress[k] = q
@@ -110,10 +91,6 @@ def measure(cloth):
                 max_q = q
     cloth.max_value = max_value
     cloth.max_stress = max_q
-    cloth.lo_x = lo_x
-    cloth.lo_y = lo_y
-    cloth.hi_x = hi_x
-    cloth.hi_y = hi_y
     high_value(cloth)
     cloth.max_strain = max_strain
     cloth.rms_strain = sqrt(sum2 / m) if m > 0 else 0.0

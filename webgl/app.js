@@ -166,9 +166,8 @@ import { clothViews } from './draw/views.js';
     if (wanted > 0) speed = played / wanted;
     wanted = 0; played = 0;
     panels.refresh();
-    const reads = panels.reads();
-    numbers.show({ reads: reads, simMs: panels.times(), rects: views.rects(), paused: paused, speed: speed,
-                   away: reads.some(function (r, i) { return views.offStage(i, r); }),
+    numbers.show({ reads: panels.reads(), simMs: panels.times(), rects: views.rects(), paused: paused, speed: speed,
+                   away: views.away(),
                    renderMs: painter.renderMs(), fps: fps, scale: painter.scale(), scaleMode: colours.scaleMode(),
                    mode: colours.mode() }, panels.asleep());
     ui.setRecording({ frames: panels.frame(), actions: panels.recordingCount(), full: panels.recordingFull(),

@@ -126,20 +126,36 @@ def test_the_compare_editor_reads_numbers_the_same_way(open_page):
 
 
 def test_a_field_being_typed_in_keeps_its_text_while_a_script_sets_the_others(open_page):
-    """Two corners' script carries a clamp for its first 60 frames, and each scripted frame
-    shows the settings again: the field a person is typing in keeps what they typed (it once
-    went back to 30 every frame, and Enter applied the old value)."""
+    """A scene's script sets damping and gravity at frame 5: the field a person is typing in
+    (gravity) keeps what they typed, and Enter applies it (each scripted frame once showed the
+    settings again over it); the other fields show the script's values, a field that merely
+    has focus too; a field typed in and left with its old text shows the setting as it is now."""
     pg = open_page()
-    pg.select_option('#preset', 'corners')
     pg.js('clothApp.setPaused(true)')
-    pg.fill('#cols', '')
-    pg.locator('#cols').press_sequentially('12')
-    f = pg.info()['frames']
-    pg.js('clothApp.advance(20)')
-    assert pg.info()['frames'] == f + 20 <= 60 and pg.input_value('#cols') == '12'
-    assert pg.input_value('#rows') == '30'                     # the others are shown as they are
-    pg.press('#cols', 'Enter')
-    assert pg.info()['params']['cols'] == 12
+    obj = json.loads(pg.info()['scene'])
+    obj['actions'] = [{'frame': 5, 'op': 'set', 'scene': {'damping': 3, 'gravity': [0, -5]}}]
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps(obj))
+    pg.fill('#gravity', '')
+    pg.locator('#gravity').press_sequentially('-2')
+    pg.js('clothApp.advance(10)')
+    assert pg.input_value('#damping') == '3' and pg.input_value('#gravity') == '-2'
+    assert pg.info()['params']['gravity'] == -5
+    pg.press('#gravity', 'Enter')
+    assert pg.info()['params']['gravity'] == -2
+    obj['actions'] = [{'frame': 5, 'op': 'set', 'scene': {'damping': 4}}]
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps(obj))
+    pg.locator('#damping').focus()                             # focused, nothing typed
+    pg.js('clothApp.advance(10)')
+    assert pg.input_value('#damping') == '4'
+    pg.js('(t) => clothApp.loadScene(t)', json.dumps(obj))
+    pg.locator('#damping').focus()
+    pg.locator('#damping').press('End')
+    pg.locator('#damping').press_sequentially('0')               # "1" becomes "10", typed
+    pg.js('clothApp.advance(10)')
+    assert pg.input_value('#damping') == '10'
+    pg.locator('#damping').press('Backspace')                  # back to "1", as it was
+    pg.locator('#damping').blur()                              # nothing to apply
+    assert pg.input_value('#damping') == '4' and pg.info()['params']['damping'] == 4
 
 
 def test_a_refused_setting_says_what_the_typed_text_became(open_page):

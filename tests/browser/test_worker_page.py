@@ -142,3 +142,20 @@ def test_a_person_takes_over_a_replay_the_worker_plays(browser):
         assert errors == []
     finally:
         context.close()
+
+
+def test_the_readouts_read_the_workers_cloth(browser):
+    """What the readouts say comes from the arrays the Worker posted: a cloth with nothing to
+    hold it, falling in the Worker, is said to have left the view."""
+    context, page, errors = open_worker_page(browser)
+    try:
+        obj = json.loads(page.evaluate('clothApp.info().scene'))
+        obj.update({'cols': 20, 'rows': 12, 'pins': []})
+        obj.pop('actions', None)
+        page.evaluate('(t) => clothApp.loadScene(t)', json.dumps(obj))
+        page.wait_for_function('() => clothApp.info().frames > 120 && '
+                               'document.getElementById("r-size").textContent.indexOf("left the view") >= 0',
+                               timeout=30000)
+        assert errors == []
+    finally:
+        context.close()

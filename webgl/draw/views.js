@@ -49,14 +49,20 @@ export const clothViews = (function () {
       // The obstacle under world (x, y) in panel i (-1: none), and where obstacle j is going.
       obstacleAt: function (i, x, y) { return list.length ? panels.obstacleUnder(i, x, y) : -1; },
       centreOf: function (j) { const at = list[0].snap.obstacle_at; return [at[2 * j], at[2 * j + 1]]; },
-      // Whether the cloth of panel i, in the box its readings give (lo_x, lo_y, hi_x, hi_y,
-      // world metres), is wholly outside the panel's rectangle.
-      offStage: function (i, r) {
-        const b = rects[i];
-        if (!renderer.ok || !b || !list[i]) return false;
-        const d = list[i].draw;
-        return d.canvasX(r.hi_x) < b.x || d.canvasX(r.lo_x) > b.x + b.w ||
-               d.canvasY(r.lo_y) < b.y || d.canvasY(r.hi_y) > b.y + b.h;
+      // The first panel whose every vertex is outside its rectangle (a cloth that nothing
+      // holds has fallen out of sight), or -1. Read with the readouts, not every frame.
+      away: function () {
+        if (!renderer.ok) return -1;
+        for (let i = 0; i < list.length && i < rects.length; i++) {
+          const d = list[i].draw, b = rects[i], pos = list[i].snap.pos, n = 2 * list[i].snap.n_verts;
+          const x0 = d.toWorld(b.x, b.y + b.h), x1 = d.toWorld(b.x + b.w, b.y);
+          let inside = false;
+          for (let k = 0; k < n && !inside; k += 2) {
+            inside = pos[k] >= x0[0] && pos[k] <= x1[0] && pos[k + 1] >= x0[1] && pos[k + 1] <= x1[1];
+          }
+          if (!inside) return i;
+        }
+        return -1;
       },
       // A world point of panel i in canvas CSS px.
       toCanvas: function (i, x, y) { return list[i].draw.toCanvas(x, y); },

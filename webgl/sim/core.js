@@ -117,8 +117,7 @@ export const clothCore = (function (api) {
   core.MIRRORED = ['pos', 'edge_value', 'stress', 'pinned', 'fixed', 'held', 'target', 'obstacle_at', 'obstacle_to'];
   core.MIRRORED_EDGES = ['edge_a', 'edge_b', 'degree'];
   core.MIRRORED_NUMBERS = ['rms_strain', 'max_strain', 'high_value', 'max_value', 'max_stress', 'imbalance', 'n_struct',
-                           'n_edges', 'broken', 'substeps', 'iterations', 'corrections', 'asleep',
-                           'lo_x', 'lo_y', 'hi_x', 'hi_y'];
+                           'n_edges', 'broken', 'substeps', 'iterations', 'corrections', 'asleep'];
   // What the readouts, the legend and the loop read of a cloth: cloth/measure.py's measures,
   // the solver's balance, the grid, the step and what runs, copied into `out` (made once per
   // panel: numbers and the scene's words, no allocation). Apart from the snapshot, whose shape
@@ -135,10 +134,6 @@ export const clothCore = (function (api) {
     out.springs = cloth.n_edges;
     out.broken = cloth.broken;
     out.asleep = cloth.asleep;
-    out.lo_x = cloth.lo_x;
-    out.lo_y = cloth.lo_y;
-    out.hi_x = cloth.hi_x;
-    out.hi_y = cloth.hi_y;
     out.dt = cloth.dt;
     out.substeps = cloth.substeps;
     out.iterations = cloth.iterations;

@@ -29,7 +29,7 @@ export const clothReadouts = (function () {
     // (7859%): the legend says in motion, and by how many weights.
     const balance = !(off > 0) ? 'balanced' : off <= core.schema().restImbalance ? 'balanced to ' + fmtPct(off)
       : off < 1 ? 'settling: ' + fmtPct(off) + ' off balance'
-      : 'in motion: ' + clothUI.fmt(off, off < 10 ? 1 : 0) + '× its weight off balance';
+      : 'in motion: ' + (off < 10 ? off.toFixed(1) : String(Math.round(off))) + '× its weight off balance';
     return { name: what, note: fabric + ' · ' + balance };
   }
 
@@ -83,7 +83,7 @@ export const clothReadouts = (function () {
     ui.setAutoFloor(AUTO_FLOOR);
     // The readouts for `now`: {reads (the panels' readings), simMs (each panel's ms a frame,
     // NaN at rest), rects (the panels' rectangles), paused, speed (simulated over wall-clock
-    // time), renderMs, fps, scale, scaleMode, mode, away (a panel's cloth is out of its view)};
+    // time), renderMs, fps, scale, scaleMode, mode, away (the first panel whose cloth is out of its view, or -1)};
     // asleep: every panel is at rest.
     function show(now, asleep) {
       const c = now.reads[0], n = now.reads.length;
@@ -96,7 +96,8 @@ export const clothReadouts = (function () {
           (c.broken > 0 ? ' left of ' + (c.springs + c.broken) : '') +
           (n > 1 ? ' · ' + n + ' panels' : '') + (asleep ? ' · at rest' : '') +
           (slow ? ' · slow motion ×' + now.speed.toFixed(2) : '') +
-          (now.away ? ' · the cloth has left the view (R resets it)' : ''),
+          (now.away < 0 ? '' : ' · ' + (n > 1 ? 'panel ' + (now.away + 1) + '’s cloth' : 'the cloth') +
+            ' has left the view (R resets it)'),
       });
       const legend = legendOf(c, now.mode);
       ui.setLegend(now.scale, now.scaleMode === 'fixed' ? 'fixed'

@@ -73,15 +73,14 @@ export const clothScene = (function () {
     function scripted() {
       const gestures = app.gestures();
       gestures.held().forEach(function (h) { if (!panels.byPerson(h.k)) gestures.forget(h.k); });
-      showSettings(true);
+      showSettings();
       app.settings().followSets();
     }
 
-    // The settings panel shows what the scene's settings are now (the session's base cloth's);
-    // `typing`: but not in the field a person is typing in.
-    function showSettings(typing) {
+    // The settings panel shows what the scene's settings are now (the session's base cloth's).
+    function showSettings() {
       params = clothSettings.paramsOf(panels.baseScene());
-      ui.setParams(params, typing);
+      ui.setParams(params);
       ui.setSolver(params.solver);
     }
 

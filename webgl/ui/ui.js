@@ -157,8 +157,19 @@ export const clothUI = (function () {
     custom.textContent = 'Custom (scene)';
     $('material').appendChild(custom);
     $('material').addEventListener('change', function () { h.material($('material').value); });
+    // The field a person has typed in and not yet committed (Enter, leaving it, an arrow key):
+    // the settings shown again meanwhile (a script's or a replay's `set`) leave its text alone,
+    // and leaving it uncommitted shows the setting as it is now.
+    let typed = null, shown = null;
     fieldKeys.forEach(function (key) {
-      clothFields.attach($(key), key, function (text) { h.param(key, text); });
+      const input = $(key);
+      clothFields.attach(input, key, function (text) { typed = null; h.param(key, text); });
+      input.addEventListener('input', function () { typed = input; });
+      input.addEventListener('blur', function () {
+        if (typed !== input) return;
+        typed = null;
+        if (shown) ui.setParams(shown);
+      });
     });
     document.querySelectorAll('input[name=mode]').forEach(function (r) {
       r.addEventListener('change', function () { if (r.checked) h.mode(r.value); });
@@ -274,16 +285,15 @@ export const clothUI = (function () {
     }
 
     const ui = {
-      // `typing`: a script or a replay changed the settings, and a field a person is typing in
-      // keeps what they typed (it applies when they press Enter or leave it).
-      setParams: function (p, typing) {
-        const focused = typing ? document.activeElement : null;
+      // Every field but the one typed in and not yet committed (above).
+      setParams: function (p) {
+        shown = p;
         fieldKeys.forEach(function (key) {
-          if (p[key] === undefined || $(key) === focused) return;
+          if (p[key] === undefined || $(key) === typed) return;
           // a key whose 0 means none (tearing): the field shows its placeholder, "off"
           $(key).value = LIMITS[key].off && !(p[key] > 0) ? '' : String(p[key]);
         });
-        if (p.material !== undefined && $('material') !== focused) $('material').value = p.material;
+        if (p.material !== undefined) $('material').value = p.material;
       },
       setCutTool: function (on) {
         $('btn-cut').setAttribute('aria-pressed', on ? 'true' : 'false');
