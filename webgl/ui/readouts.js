@@ -83,8 +83,8 @@ export const clothReadouts = (function () {
     ui.setAutoFloor(AUTO_FLOOR);
     // The readouts for `now`: {reads (the panels' readings), simMs (each panel's ms a frame,
     // NaN at rest), rects (the panels' rectangles), paused, speed (simulated over wall-clock
-    // time), renderMs, fps, scale, scaleMode, mode, away (the first panel whose cloth is out of its view, or -1)};
-    // asleep: every panel is at rest.
+    // time), renderMs, fps, scale, scaleMode, mode, away (the first panel whose cloth is out of
+    // its view, or -1)}; asleep: every panel is at rest.
     function show(now, asleep) {
       const c = now.reads[0], n = now.reads.length;
       const slow = !now.paused && now.speed < SLOW_MOTION;
