@@ -330,9 +330,11 @@ def test_within_reach_the_held_vertex_follows_on_finer_grids(open_page):
 
 @pytest.mark.xfail(strict=True, reason='known limit: at a flick of 20 px a frame (1,200 px/s, 4-6 m/s at '
                    'the presets\' scales) round a 40 px circle the held vertex trails the pointer by 1.4 px on '
-                   'the curtain, 1.7 px on Two corners, 1.2 px on the flag and 2.9 px on the towel at 60x60 '
-                   '(the exact steps: 0.07 px; with 7 sweeps instead of 5 the towel 1.4 px): the step\'s budget '
-                   'does not carry so fast a pull through the finer towel within the frame')
+                   'the curtain, 1.7 px on Two corners and 2.9 px on the towel at 60x60 (the exact steps: 0.44, '
+                   '0.47 and 0.08 px): the step\'s budget does not carry so fast a pull through the finer towel '
+                   'within the frame')
 def test_a_fast_flick_within_reach_is_followed_within_a_pixel_and_a_half(open_page):
-    lags = worst_lag(open_page(), 'mouse', 20.0, ('curtain', 'corners', 'flag', ('towel', 60)))
+    # Not the flag: at this speed its wind and the flick together pull harder than the hand's
+    # 20 N, and on the exact steps its held vertex trails 2.6 px (beyond reach, as it should be).
+    lags = worst_lag(open_page(), 'mouse', 20.0, ('curtain', 'corners', ('towel', 60)))
     assert all(0 <= v <= 1.5 for v in lags.values()), lags
