@@ -11,7 +11,7 @@ import math
 
 import pytest
 
-from cloth.api import load, notes, run
+from cloth.api import load, notes
 from cloth.keys import MODEL
 
 from catalogue import RECORDINGS, RECORDED, PLAYED
@@ -39,13 +39,13 @@ def test_the_recordings_are_of_the_old_model_and_include_compare_mode():
 
 
 @pytest.mark.parametrize('name,panel', cases())
-def test_a_recording_made_before_plays_every_frame_under_the_membrane_and_says_so(name, panel):
+def test_a_recording_made_before_plays_every_frame_under_the_membrane_and_says_so(cli_run, name, panel):
     scene = RECORDINGS[name]
     text = json.dumps(scene)
     assert {'grab', 'move', 'release', 'set'} <= {a['op'] for a in scene['actions']
                                                   if a['frame'] <= PLAYED}
     assert scene['frames'] > PLAYED
-    result = json.loads(run(text, PLAYED, False, panel))
+    result = json.loads(cli_run(text, PLAYED, False, panel)['ok'])
     assert result['frames'] == PLAYED
     assert all(math.isfinite(v) for p in result['positions'] for v in p)
     note = notes(load(text, panel))[1]

@@ -78,12 +78,14 @@ def test_cut_every_edge_leaves_a_dust_in_free_fall(core):
 
 
 @pytest.mark.parametrize('name', sorted(CATALOGUE))
-def test_bit_identical_results(core, name):
+def test_bit_identical_results(core, cli_run, name):
     scene, frames = CATALOGUE[name]
     text = json.dumps(scene)
     js = core(text, frames)
     assert 'ok' in js, js
-    assert_identical(run(text, frames), js['ok'])
+    py = cli_run(text, frames)
+    assert 'ok' in py, py
+    assert_identical(py['ok'], js['ok'])
 
 
 def test_the_scenes_cover_every_solver_fabric_and_model():

@@ -10,13 +10,12 @@ import math
 import pytest
 
 from catalogue import RECORDINGS, PLAYED
-from cloth.api import run
 
 FILES = sorted(RECORDINGS)
 
 
 @pytest.mark.parametrize('name', FILES)
-def test_a_recording_made_before_plays_in_the_page_as_in_cpython_and_says_so(open_page, name):
+def test_a_recording_made_before_plays_in_the_page_as_in_cpython_and_says_so(open_page, cli_run, name):
     pg = open_page('?paused=1')
     scene = RECORDINGS[name]
     text = json.dumps(scene)
@@ -29,7 +28,7 @@ def test_a_recording_made_before_plays_in_the_page_as_in_cpython_and_says_so(ope
     panels = pg.js('clothApp.panels()')
     assert len(panels) == max(1, len(scene.get('compare', [])))
     for i, p in enumerate(panels):
-        cpython = json.loads(run(text, PLAYED, False, i if len(panels) > 1 else -1))['positions']
+        cpython = json.loads(cli_run(text, PLAYED, False, i if len(panels) > 1 else -1)['ok'])['positions']
         assert p['positions'] == cpython, (name, i)
     # the rest of it plays, and a replay stops at its last frame
     assert pg.js('(n) => clothApp.advance(n, true)', frames - PLAYED + 5) == frames

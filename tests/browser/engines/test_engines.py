@@ -12,7 +12,6 @@ pen's press arrives, its later moves and release do not), touch in WebKit (its d
 pointerType "touch" actions as mouse events). Dispatched events are untrusted, so the page's
 setPointerCapture throws and is skipped (input.js); everything after the event is the same code.
 """
-import functools
 import json
 import sys
 import time
@@ -31,7 +30,6 @@ from test_compare_page import PAIR
 
 sys.path.insert(0, str(ROOT))
 from cloth import api  # noqa: E402
-from cloth.scene import SceneError  # noqa: E402
 from cloth.keys import MODEL  # noqa: E402
 sys.path.pop(0)
 
@@ -118,23 +116,16 @@ BAD = test_page.MALFORMED + ['{"cols": 2, "rows": 2, "spacing": 1, "a\\nb": 1}',
                              '{"cols": 2, "rows": 2, "spacing": 1, "\\ud800\\ud83d\\ude00": 1}']
 
 
-@functools.lru_cache(maxsize=None)
-def cli_cases():
-    """[(scene text, frames, what the CLI gives: {'ok': text} or {'error': message})], made once
-    for both engines."""
+def cli_cases(cli_run):
+    """[(scene text, frames, what the CLI gives: {'ok': text} or {'error': message})]: each
+    CPython run made once a suite run (tests/conftest.py cli_run)."""
     cases = [(json.dumps(CATALOGUE[name][0]), CATALOGUE[name][1]) for name in sorted(CATALOGUE)]
     cases += [(text, 1) for text in BAD]
-    out = []
-    for text, frames in cases:
-        try:
-            out.append((text, frames, {'ok': api.run(text, frames)}))
-        except SceneError as e:
-            out.append((text, frames, {'error': str(e)}))
-    return out
+    return [(text, frames, cli_run(text, frames)) for text, frames in cases]
 
 
-def test_core_run_is_the_cli_character_for_character(open_page):
-    cases = cli_cases()
+def test_core_run_is_the_cli_character_for_character(open_page, cli_run):
+    cases = cli_cases(cli_run)
     pg = open_page('?paused=1')
     got = pg.js('''(cases) => cases.map(([t, f]) => {
         try { return {ok: clothCore.run(t, f)}; }
