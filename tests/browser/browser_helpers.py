@@ -1,9 +1,12 @@
 """Paths, launch flags and small helpers shared by the browser tests."""
+import json
 import os
 import struct
 import zlib
 import pathlib
 import time
+
+from cloth.presets import PRESETS, preset_scene
 
 # CLOTH_ROOT lets the suite test another checkout's dist/ (default: this repository).
 ROOT = pathlib.Path(os.environ.get('CLOTH_ROOT') or pathlib.Path(__file__).absolute().parents[2])
@@ -100,6 +103,13 @@ WATCH = '''(n) => { const c = clothApp.cloth(), pos = c.pos, fps = 1 / c.dt;
       before.set(pos);
     }
     return out; }'''
+
+
+def default_preset_at(cols, rows):
+    """The scene of the page's default preset (the first of cloth/presets.py PRESETS) on a grid of
+    cols x rows, as text: a test whose recording the CLI replays frame by frame runs it smaller
+    (CPython steps the full 40x30 at about 0.1 s a frame)."""
+    return json.dumps(preset_scene(PRESETS[0][0], cols, rows))
 
 
 def load_paused(pg, text):

@@ -2,7 +2,8 @@
 import json
 
 from cloth.keys import MODEL
-from cloth.presets import PRESETS, preset_scene
+
+from browser_helpers import default_preset_at
 
 
 def test_a_long_gap_never_injects_a_big_step(open_page):
@@ -11,7 +12,7 @@ def test_a_long_gap_never_injects_a_big_step(open_page):
     pg.reload()
     pg.wait_for_function('window.clothApp !== undefined')
     # The default preset at a quarter of its vertices: the CLI replays the whole recording.
-    pg.js('(t) => clothApp.loadScene(t)', json.dumps(preset_scene(PRESETS[0][0], 20, 15)))
+    pg.js('(t) => clothApp.loadScene(t)', default_preset_at(20, 15))
     pg.clock.pause_at(5000)             # from here time moves only when the test says
     f0 = pg.info()['frames']
     pg.clock.run_for(1000)              # one second of 60 Hz animation frames

@@ -14,10 +14,9 @@ import sys
 import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-from browser_helpers import DIST, ROOT, bytes_under, wait_until, load_paused, page_url
+from browser_helpers import DIST, ROOT, bytes_under, default_preset_at, wait_until, load_paused, page_url
 
 from cloth.hands import HAND_FORCE, HAND_STIFFNESS
-from cloth.presets import PRESETS, preset_scene
 
 SMALL = {'cols': 12, 'rows': 9, 'spacing': 0.1, 'pins': [0, 11], 'damping': 1}
 
@@ -65,8 +64,8 @@ def touch(cdp, kind, points):
 def test_mouse_drag_paused_and_running_replays_exactly(open_page):
     pg = open_page()
     # The default preset at a quarter of its vertices: the CLI replays every frame the running
-    # part lasts (about 200 on a busy machine), 0.1 s each in CPython at the full 40x30.
-    load_paused(pg, json.dumps(preset_scene(PRESETS[0][0], 20, 15)))
+    # part lasts (about 200 on a busy machine).
+    load_paused(pg, default_preset_at(20, 15))
     k = 14 * 20 + 10
     x, y = screen(pg, k)
     pg.mouse.move(x, y)
