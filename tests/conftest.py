@@ -38,8 +38,8 @@ def pytest_terminal_summary(terminalreporter):
 
 @pytest.fixture(scope='session')
 def cli_run(tmp_path_factory):
-    """cli_run(text, frames=None, with_trace=False, panel=-1) -> {'ok': the text cloth.api.run
-    gives} or {'error': its SceneError's message}. CPython's answer is the same every time it is
+    """cli_run(text, frames=None, with_trace=False, panel=-1): cloth.api.run's text, or its
+    SceneError raised again with the same message. CPython's answer is the same every time it is
     asked, and the parity tests of the three engines and the recordings' tests ask for the same
     runs (the catalogue takes CPython minutes): each is computed once a suite run and kept in a
     file that the processes of pytest-xdist share (a run asked by two at once is computed twice,
@@ -50,7 +50,7 @@ def cli_run(tmp_path_factory):
     store = store / 'cli-runs'
     store.mkdir(exist_ok=True)
 
-    def cached(text, frames=None, with_trace=False, panel=-1):
+    def answer(text, frames, with_trace, panel):
         key = hashlib.sha256(json.dumps([text, frames, with_trace, panel]).encode()).hexdigest()
         path = store / (key + '.json')
         if path.exists():
@@ -63,4 +63,10 @@ def cli_run(tmp_path_factory):
         part.write_text(json.dumps(out))
         os.replace(part, path)        # whole or absent: another process never reads a part
         return out
+
+    def cached(text, frames=None, with_trace=False, panel=-1):
+        out = answer(text, frames, with_trace, panel)
+        if 'error' in out:
+            raise SceneError(out['error'])
+        return out['ok']
     return cached

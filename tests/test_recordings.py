@@ -45,7 +45,7 @@ def test_a_recording_made_before_plays_every_frame_under_the_membrane_and_says_s
     assert {'grab', 'move', 'release', 'set'} <= {a['op'] for a in scene['actions']
                                                   if a['frame'] <= PLAYED}
     assert scene['frames'] > PLAYED
-    result = json.loads(cli_run(text, PLAYED, False, panel)['ok'])
+    result = json.loads(cli_run(text, PLAYED, False, panel))
     assert result['frames'] == PLAYED
     assert all(math.isfinite(v) for p in result['positions'] for v in p)
     note = notes(load(text, panel))[1]

@@ -28,7 +28,7 @@ def test_a_recording_made_before_plays_in_the_page_as_in_cpython_and_says_so(ope
     panels = pg.js('clothApp.panels()')
     assert len(panels) == max(1, len(scene.get('compare', [])))
     for i, p in enumerate(panels):
-        cpython = json.loads(cli_run(text, PLAYED, False, i if len(panels) > 1 else -1)['ok'])['positions']
+        cpython = json.loads(cli_run(text, PLAYED, False, i if len(panels) > 1 else -1))['positions']
         assert p['positions'] == cpython, (name, i)
     # the rest of it plays, and a replay stops at its last frame
     assert pg.js('(n) => clothApp.advance(n, true)', frames - PLAYED + 5) == frames

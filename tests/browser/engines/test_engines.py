@@ -31,6 +31,7 @@ from test_compare_page import PAIR
 sys.path.insert(0, str(ROOT))
 from cloth import api  # noqa: E402
 from cloth.keys import MODEL  # noqa: E402
+from cloth.scene import SceneError  # noqa: E402
 sys.path.pop(0)
 
 COLS, ROWS = 40, 30      # the default preset (curtain)
@@ -121,7 +122,13 @@ def cli_cases(cli_run):
     CPython run made once a suite run (tests/conftest.py cli_run)."""
     cases = [(json.dumps(CATALOGUE[name][0]), CATALOGUE[name][1]) for name in sorted(CATALOGUE)]
     cases += [(text, 1) for text in BAD]
-    return [(text, frames, cli_run(text, frames)) for text, frames in cases]
+    out = []
+    for text, frames in cases:
+        try:
+            out.append((text, frames, {'ok': cli_run(text, frames)}))
+        except SceneError as e:
+            out.append((text, frames, {'error': str(e)}))
+    return out
 
 
 def test_core_run_is_the_cli_character_for_character(open_page, cli_run):
