@@ -247,7 +247,8 @@ def hold(cloth):
     """After predict: each gripped vertex's inertial target with the grip's damper in it,
     v+ (1 + (c + b) h') = u + h' (f / m + b v_hand), b = HAND_DAMPING (integrate.py's form with
     the damper's pull toward the hand's velocity; u = 4/3 v - 1/3 v-, or v under backward
-    Euler), and the factor its inertia weight takes (cloth.grip_w: the solvers multiply by it)."""
+    Euler), the factor its inertia weight takes (cloth.grip_w: the solvers multiply by it), and
+    its first guess (guess_grip)."""
     if cloth.n_gripped == 0:
         return
     hp = cloth.h_bdf
@@ -270,6 +271,66 @@ def hold(cloth):
         uy = (cloth.pred[i + 1] - cloth.base[i + 1] - gy) / (keep * hp)
         cloth.pred[i] = cloth.base[i] + hp * held * (ux + hp * HAND_DAMPING * hx) + gx * held / keep
         cloth.pred[i + 1] = cloth.base[i + 1] + hp * held * (uy + hp * HAND_DAMPING * hy) + gy * held / keep
+        guess_grip(cloth, v, hx * cloth.h, hy * cloth.h)
+
+
+def grip_energy(cloth, v, x, y, w):
+    """The gripped vertex v's own terms of the step's energy at (x, y), the cloth elsewhere
+    where it is: its inertia, its springs and its hand's pull (cloth/vbd.py)."""
+    i = v + v
+    ex = x - cloth.pred[i]
+    ey = y - cloth.pred[i + 1]
+    springs = 0.0
+    pos = cloth.pos
+    for q in range(cloth.adj_start[v], cloth.adj_start[v + 1]):
+        j = cloth.adj_other[q] + cloth.adj_other[q]
+        sx = pos[j] - x
+        sy = pos[j + 1] - y
+        d = math.sqrt(sx * sx + sy * sy) - cloth.adj_rest[q]
+        if d > 0.0:
+            springs += 0.5 * cloth.adj_k[q] * d * d
+    dx = x - cloth.aim[i]
+    dy = y - cloth.aim[i + 1]
+    f = cloth.grip_f[v]
+    return 0.5 * w * (ex * ex + ey * ey) + springs + pull_energy(f, f / cloth.grip_k[v], dx * dx + dy * dy)
+
+
+def pull_energy(f, r, d2):
+    """A hand's spring's energy at a squared distance d2 from its aim: f r (sqrt(1 + d2 / r^2) - 1),
+    a pull of f r^-1 d near the aim that levels off at f."""
+    return f * r * (math.sqrt(1.0 + d2 / (r * r)) - 1.0)
+
+
+def guess_grip(cloth, v, mx, my):
+    """The solve's first guess for gripped vertex v: on the line from predict's (where its
+    velocity carries it) to where it was moved by the hand's move this step (mx, my), the point
+    where its own terms are least (a parabola through the ends and the middle, the best of the
+    four). A hand that starts or turns fast leaves predict's guess centimetres from its aim,
+    more than the sweeps bring back in a step."""
+    i = v + v
+    w = cloth.mass[v] * cloth.w_scale * cloth.grip_w
+    x0 = cloth.pos[i]
+    y0 = cloth.pos[i + 1]
+    dx = cloth.prev[i] + mx - x0
+    dy = cloth.prev[i + 1] + my - y0
+    e0 = grip_energy(cloth, v, x0, y0, w)
+    eh = grip_energy(cloth, v, x0 + 0.5 * dx, y0 + 0.5 * dy, w)
+    e1 = grip_energy(cloth, v, x0 + dx, y0 + dy, w)
+    best = 0.0
+    low = e0
+    if eh < low:
+        best = 0.5
+        low = eh
+    if e1 < low:
+        best = 1.0
+        low = e1
+    curv = e0 - 2.0 * eh + e1
+    if curv > 0.0:
+        t = 0.25 * (3.0 * e0 - 4.0 * eh + e1) / curv
+        if t > 0.0 and t < 1.0 and grip_energy(cloth, v, x0 + t * dx, y0 + t * dy, w) < low:
+            best = t
+    cloth.pos[i] = x0 + best * dx
+    cloth.pos[i + 1] = y0 + best * dy
 
 
 def hands_arrived(cloth):

@@ -3,7 +3,7 @@
     frame:  the air (if it moves)
             then `substeps` steps of dt / substeps, each:
                 aim the hands  ->  move the obstacles (if any)  ->  predict
-                ->  the grips' damping (the implicit solvers)  ->  solve
+                ->  the grips' damping and first guess (the implicit solvers)  ->  solve
                 ->  push out of obstacles (if any)  ->  finish (velocities)
                 ->  tear (if the scene tears)
             then: hands and obstacles arrive where they were going, and sleep (if on)
