@@ -375,13 +375,16 @@ def assemble(cloth):
             kyy = t1 + t2 * ny * ny
         else:
             # A slack spring's axial stiffness, as the sweeps take it (a majoriser: its true
-            # curvature is 0), but none at a gripped vertex: the hand holds that vertex near
-            # its aim, and a slack spring's stiffness tied its neighbour to it in the coarse
-            # problem, which then could not move the cloth behind a hand that moves with it (a
-            # swinging chain held at its end on its own path: each step 3-14 mm from the exact
-            # one, against 0.1-3 mm untouched; 0.1-5 mm without it). The line search along
-            # the correction is on G itself, so a softer model cannot raise G.
-            c = 0.0 if grip[a] >= 0 or grip[b] >= 0 else k
+            # curvature is 0), but none on a spring from a gripped vertex to one the hand does
+            # not grip: the hand holds its vertex near its aim, and that stiffness tied the
+            # neighbour to it in the coarse problem, which then could not move the cloth behind
+            # a hand that moves with it (a swinging chain held at its end on its own path: each
+            # step 3-14 mm from the exact one, against 0.1-3 mm untouched; 0.1-5 mm without
+            # it). Inside a patch the hand grips the stiffness stays: without it the patch went
+            # soft in the coarse problem and, at 200x200, the held vertex trailed a hand going
+            # round at 8 px a frame by 7 px. The line search along the correction is on G
+            # itself, so a softer model cannot raise G.
+            c = 0.0 if (grip[a] >= 0) != (grip[b] >= 0) else k
             kxx = c * nx * nx
             kxy = c * nx * ny
             kyy = c * ny * ny
