@@ -33,7 +33,7 @@ made, or the topology, the pins or the hands changed.
 
 import math
 
-from cloth.host import f64, i32
+from cloth.host import f64
 from cloth.multigrid import DIAG, hierarchy, galerkin, restrict, prolong, pcg, factor_dense
 from cloth.contact import keep_out, unopposed
 from cloth.hands import pull_energy
@@ -67,7 +67,6 @@ def prepare(cloth):
     cloth.grad = f64(2 * cloth.n_verts)
     cloth.dirn = f64(2 * cloth.n_verts)
     cloth.mg_anchor = f64(2 * cloth.n_verts)
-    cloth.mg_still = i32(cloth.n_verts)
     nc = cloth.levels[1].n if len(cloth.levels) > 1 else 0
     cloth.coarse_e = f64(2 * nc)
     cloth.coarse_b = f64(2 * nc)
@@ -375,15 +374,15 @@ def assemble(cloth):
             kyy = t1 + t2 * ny * ny
         else:
             # A slack spring's axial stiffness, as the sweeps take it (a majoriser: its true
-            # curvature is 0), but none on a spring from a gripped vertex to one the hand does
-            # not grip: the hand holds its vertex near its aim, and that stiffness tied the
-            # neighbour to it in the coarse problem, which then could not move the cloth behind
-            # a hand that moves with it (a swinging chain held at its end on its own path: each
-            # step 3-14 mm from the exact one, against 0.1-3 mm untouched; 0.1-5 mm without
-            # it). Inside a patch the hand grips the stiffness stays: without it the patch went
-            # soft in the coarse problem and, at 200x200, the held vertex trailed a hand going
-            # round at 8 px a frame by 7 px. The line search along the correction is on G
-            # itself, so a softer model cannot raise G.
+            # curvature is 0), but none on a spring from a gripped vertex to one no hand grips:
+            # the hand holds its vertex near its aim, and that stiffness tied the neighbour to
+            # it in the coarse problem, which then could not move the cloth behind a hand that
+            # moves with it (a swinging chain held at its end on its own path: each step 3-14
+            # mm from the exact one, against 0.1-3 mm untouched; 0.1-5 mm without it). Inside
+            # a patch the hand grips the stiffness stays: without it the patch went soft in the
+            # coarse problem and, at 200x200, the held vertex trailed a hand going round at 8
+            # px a frame by 7 px. The line search along the correction is on G itself, so a
+            # softer model cannot raise G.
             c = 0.0 if (grip[a] >= 0) != (grip[b] >= 0) else k
             kxx = c * nx * nx
             kxy = c * nx * ny
@@ -503,9 +502,7 @@ def correct(cloth):
                     cloth.mg_stale = True
                     break
     if cloth.mg_stale:
-        for t in range(cloth.n_verts):
-            cloth.mg_still[t] = cloth.fixed[t]
-        galerkin(fine, coarse, cloth.mg_still)
+        galerkin(fine, coarse, cloth.fixed)
         for l in range(2, len(levels)):
             galerkin(levels[l - 1], levels[l], None)
         factor_dense(levels[len(levels) - 1])
@@ -520,12 +517,12 @@ def correct(cloth):
         cloth.rebuilds += 1
     cloth.mg_age += 1
     b = cloth.coarse_b
-    restrict(fine, coarse, cloth.mg_still, cloth.grad, b)
+    restrict(fine, coarse, cloth.fixed, cloth.grad, b)
     for t in range(2 * coarse.n):
         b[t] = -b[t]
     pcg(levels, 1, COARSE_STEPS, b, cloth.coarse_e)
     d = cloth.dirn
-    prolong(fine, coarse, cloth.mg_still, cloth.coarse_e, d)
+    prolong(fine, coarse, cloth.fixed, cloth.coarse_e, d)
     slope = 0.0
     g = cloth.grad
     for t in range(2 * cloth.n_verts):
