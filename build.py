@@ -41,7 +41,7 @@ PAGE_ENTRY = 'app'
 WORKER_ENTRY = 'sim/worker'
 STYLES = ['style.css']
 # GLSL, inlined as <script type="x-shader/x-vertex|fragment" id="shader-NAME"> for renderer.js.
-SHADERS = ['colour.glsl', 'edge.vert', 'edge.frag', 'cell.vert', 'cell.frag', 'mark.vert', 'mark.frag']
+SHADERS = ['colour.glsl', 'edge-quad.glsl', 'edge.vert', 'edge-fetch.vert', 'es3.vert', 'es3.frag', 'edge.frag', 'cell.vert', 'cell.frag', 'mark.vert', 'mark.frag']
 TEMPLATE = 'index.html'
 
 _IMPORT_NAMED = re.compile(r"^import\s*\{([^}]*)\}\s*from\s*'(\.\.?/[^']+)\.js';?\s*$")

@@ -1,12 +1,17 @@
-// Raw WebGL renderer: every edge in one instanced draw call, pins as markers.
+// Raw WebGL renderer: every edge in one draw call, pins as markers.
 //
-// Data layout (one interleaved Float32Array, one instance per edge):
+// Data layout (one Float32Array, six floats an edge):
 //   [ax, ay, bx, by, va, vb] * n_edges      world metres; va/vb = colour value at each end
-// A static 4-vertex strip (a_corner = (end 0|1, side -1|+1)) is stretched over each
-// edge in the vertex shader, in device pixels, so lines have the same width at any
-// size and devicePixelRatio (gl.lineWidth > 1 is ignored by most implementations).
-// Per frame the arrays are refilled in place and sent with bufferSubData; they are
-// reallocated only when a scene with more edges or vertices arrives.
+// A quad (corner = (end 0|1, side -1|+1)) is stretched over each edge in the vertex shader
+// (shaders/edge-quad.glsl), in device pixels. WebGL 2 sends the array as a texture, three
+// RG32F texels an edge, and draws six vertices an edge that fetch it by gl_VertexID
+// (shaders/edge-fetch.vert); WebGL 1 sends it as an instanced attribute buffer, one instance an
+// edge over a static 4-vertex strip (shaders/edge.vert). Why not instances everywhere: a
+// software rasteriser pays per instance (SwiftShader, Chromium's WebGL without a GPU: 70 ms of
+// CPU a frame for a 40x30 curtain's 4,592 edges, 4 ms without them). A scene with more edges
+// than a texture holds takes WebGL 1's way.
+// Per frame the arrays are refilled in place and sent with texSubImage2D or bufferSubData;
+// they are reallocated only when a scene with more edges or vertices arrives.
 //
 // What it draws is a snapshot (clothCore.snapshot): positions, the edges' ends, a value per
 // edge and per vertex, and the markers' flags; it never reads the cloth itself.
@@ -111,6 +116,9 @@ export const clothRenderer = (function () {
     }
 
     let inst = null, edgeProg = null, markProg = null, cellProg = null;
+    let fetchProg = null;     // WebGL 2's edges (no instances), null on WebGL 1
+    let mostPerRow = 0;       // edges a row of its texture holds at most, and rows at most
+    let mostRows = 0;
     let bigIndices = false;   // 32-bit element indices (WebGL 2, or WebGL 1's extension)
     let cornerBuf = null, markCornerBuf = null;
     let gen = 0;          // bumped when the GL objects are made again (a restored context)
@@ -130,8 +138,15 @@ export const clothRenderer = (function () {
           draw: function (mode, first, count, n) { ext.drawArraysInstancedANGLE(mode, first, count, n); },
         };
       }
-      const colour = shader('colour.glsl');
-      edgeProg = program(gl, shader('edge.vert'), colour + shader('edge.frag'), ['a_corner', 'a_pa', 'a_pb', 'a_val'], 'edge');
+      const colour = shader('colour.glsl'), quad = shader('edge-quad.glsl');
+      edgeProg = program(gl, quad + shader('edge.vert'), colour + shader('edge.frag'), ['a_corner', 'a_pa', 'a_pb', 'a_val'], 'edge');
+      if (version === 2) {
+        // '#version' must come first (the inlined script's text starts with a newline).
+        fetchProg = program(gl, shader('es3.vert').trimStart() + quad + shader('edge-fetch.vert'),
+                            shader('es3.frag').trimStart() + colour + shader('edge.frag'), [], 'edge (fetched)');
+        mostRows = gl.getParameter(gl.MAX_TEXTURE_SIZE);
+        mostPerRow = Math.floor(mostRows / 3);
+      }
       cellProg = program(gl, shader('cell.vert'), colour + shader('cell.frag'), ['a_pos', 'a_val'], 'cell');
       bigIndices = version === 2 || !!gl.getExtension('OES_element_index_uint');
       markProg = program(gl, shader('mark.vert'), shader('mark.frag'), ['a_corner', 'a_center', 'a_kind'], 'marker');
@@ -219,6 +234,8 @@ export const clothRenderer = (function () {
       let edgeData = new Float32Array(0), markData = new Float32Array(0);
       let edgeView = edgeData;  // edgeData's first 6 * n_edges floats, made once per scene
       let edgeCap = 0, markCap = 0;
+      // WebGL 2's edge texture: edges a row (0: the edges go by instances, WebGL 1's way) and rows.
+      let edgeTex = null, perRow = 0, texRows = 0;
       let view = { x0: 0, x1: 1, y0: -1, y1: 0 };
       let spacing = 1;  // the grid's rest length, metres: sets the edge width
       // The panel's rectangle in the canvas (CSS px; null: the whole canvas), and
@@ -238,8 +255,22 @@ export const clothRenderer = (function () {
         gl.bindBuffer(gl.ARRAY_BUFFER, cellBuf);
         gl.bufferData(gl.ARRAY_BUFFER, cellData.byteLength || 4, gl.DYNAMIC_DRAW);
         cellIdxBuf = gl.createBuffer();
+        edgeTex = null;
+        if (perRow > 0) makeEdgeTexture();
         cellsFor = -1;
         bufGen = gen;
+      }
+
+      function makeEdgeTexture() {
+        if (edgeTex) gl.deleteTexture(edgeTex);
+        edgeTex = gl.createTexture();
+        gl.bindTexture(gl.TEXTURE_2D, edgeTex);
+        // Fetched texel by texel: no filtering (a float texture with filtering is incomplete).
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+        gl.texImage2D(gl.TEXTURE_2D, 0, gl.RG32F, 3 * perRow, texRows, 0, gl.RG, gl.FLOAT, null);
       }
 
       function box() {
@@ -262,10 +293,19 @@ export const clothRenderer = (function () {
         buffers();
         const ne = snap.n_edges, nv = snap.n_verts;
         if (ne > edgeCap) {
-          edgeCap = ne;
-          edgeData = new Float32Array(6 * ne);
+          if (fetchProg && ne <= mostPerRow * mostRows) {
+            // Whole rows of the texture: the array is sent a row at a time.
+            perRow = Math.min(ne, mostPerRow);
+            texRows = Math.ceil(ne / perRow);
+            edgeCap = perRow * texRows;
+            makeEdgeTexture();
+          } else {
+            perRow = 0;
+            edgeCap = ne;
+          }
+          edgeData = new Float32Array(6 * edgeCap);
           gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
-          gl.bufferData(gl.ARRAY_BUFFER, edgeData.byteLength, gl.DYNAMIC_DRAW);
+          gl.bufferData(gl.ARRAY_BUFFER, perRow > 0 ? 4 : edgeData.byteLength, gl.DYNAMIC_DRAW);
         }
         if (nv > markCap) {
           markCap = nv;
@@ -449,7 +489,17 @@ export const clothRenderer = (function () {
           gl.drawElements(gl.TRIANGLES, nCellIdx, gl.UNSIGNED_INT, 0);
           r.drawCalls++;
         }
-        if (!fill && ne > 0) {
+        if (!fill && ne > 0 && perRow > 0) {
+          gl.bindTexture(gl.TEXTURE_2D, edgeTex);
+          gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, 3 * perRow, Math.ceil(ne / perRow), gl.RG, gl.FLOAT, edgeData, 0);
+          useColoured(fetchProg, px, offX, offY, vw, vh, stressMode, scale);
+          gl.uniform1f(fetchProg.u.u_halfWidth, halfWidth(px));
+          gl.uniform1i(fetchProg.u.u_perRow, perRow);
+          gl.uniform1i(fetchProg.u.u_edges, 0);
+          for (let i = 0; i <= 3; i++) gl.disableVertexAttribArray(i);
+          gl.drawArrays(gl.TRIANGLES, 0, 6 * ne);
+          r.drawCalls++;
+        } else if (!fill && ne > 0) {
           gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
           gl.bufferSubData(gl.ARRAY_BUFFER, 0, edgeView);
           useColoured(edgeProg, px, offX, offY, vw, vh, stressMode, scale);

@@ -167,6 +167,10 @@ def test_webgl1_path_and_no_webgl_message(open_page):
     test_render.test_no_webgl_shows_a_clear_message(open_page)
 
 
+def test_webgl2_and_webgl1_draw_the_same_picture(open_page):
+    test_render.test_webgl2_and_webgl1_draw_the_same_picture(open_page, (60, 60))
+
+
 def test_context_loss_and_restore(open_page):
     test_render.test_context_loss_and_restore(open_page)
 
