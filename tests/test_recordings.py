@@ -3,8 +3,8 @@ tests/recordings/ is a recording in the page's old format (every op, five preset
 set live, compare mode with a hand that moves `by`). They run under the membrane model, which
 moves the cloth differently from the old core (so the old positions are not expected), and
 the core says so in words (api.notes). What must hold: every recorded frame and action plays,
-the result is finite. CPython plays each through its first PLAYED frames (every op a recording
-holds happens by then; a frame of 30x30 takes CPython about 0.1 s); the page plays them whole
+the result is finite. CPython plays each through the frames the parity suite compares
+(catalogue.played: every op a recording holds happens by then); the page plays them whole
 (tests/browser/test_recordings_page.py)."""
 import json
 import math
@@ -14,7 +14,7 @@ import pytest
 from cloth.api import load, notes
 from cloth.keys import MODEL
 
-from catalogue import RECORDINGS, RECORDED, PLAYED
+from catalogue import RECORDINGS, RECORDED, played
 
 FILES = sorted(RECORDINGS)
 
@@ -42,11 +42,11 @@ def test_the_recordings_are_of_the_old_model_and_include_compare_mode():
 def test_a_recording_made_before_plays_every_frame_under_the_membrane_and_says_so(cli_run, name, panel):
     scene = RECORDINGS[name]
     text = json.dumps(scene)
+    frames = played(scene)
     assert {'grab', 'move', 'release', 'set'} <= {a['op'] for a in scene['actions']
-                                                  if a['frame'] <= PLAYED}
-    assert scene['frames'] > PLAYED
-    result = json.loads(cli_run(text, PLAYED, False, panel))
-    assert result['frames'] == PLAYED
+                                                  if a['frame'] <= frames}
+    result = json.loads(cli_run(text, frames, False, panel))
+    assert result['frames'] == frames
     assert all(math.isfinite(v) for p in result['positions'] for v in p)
     note = notes(load(text, panel))[1]
     assert 'model 1' in note and 'membrane' in note, note
