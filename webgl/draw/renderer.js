@@ -8,7 +8,7 @@
 // (shaders/edge-fetch.vert); WebGL 1 sends it as an instanced attribute buffer, one instance an
 // edge over a static 4-vertex strip (shaders/edge.vert). Why not instances everywhere: a
 // software rasteriser pays per instance (SwiftShader, Chromium's WebGL without a GPU: 70 ms of
-// CPU a frame for a 40x30 curtain's 4,592 edges, 4 ms without them). A scene with more edges
+// CPU a frame for a 40x30 curtain's 4,592 edges, 9 ms without that draw). A scene with more edges
 // than a texture holds takes WebGL 1's way.
 // Per frame the arrays are refilled in place and sent with texSubImage2D or bufferSubData;
 // they are reallocated only when a scene with more edges or vertices arrives.
