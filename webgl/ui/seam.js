@@ -108,7 +108,7 @@ export const clothSeam = (function () {
       pixels: function (points) {
         app.render();
         const r = canvas.getBoundingClientRect();
-        return points.map(function (p) { return renderer.readPixel(p[0] - r.left, p[1] - r.top); });
+        return renderer.readPixels(points.map(function (p) { return [p[0] - r.left, p[1] - r.top]; }));
       },
       info: function () {
         const st = app.status(), ui = app.ui, n = views.count(), c = n ? panels.cloth(0) : null;
