@@ -97,6 +97,8 @@ class Cloth:
         self.mg_changed = 0       # 1 while they differ from the fixed vertices and grips now
         self.mg_fixed = i32(n)    # the fixed vertices and grips the coarse operators were made
         self.mg_grip = i32(n)     # for (hands.refix: a change of them makes the operators stale)
+        self.near = i32(0)        # the vertices near a hand, and their marks (vbd.near_hands)
+        self.near_mark = i32(0)
         # measures: per structural edge the value the colours show, per vertex the seed's
         # stress Q, and summaries
         self.load2 = 0.0          # sum over free vertices of (m g)^2: the imbalance's scale

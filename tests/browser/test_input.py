@@ -323,8 +323,10 @@ def test_within_reach_the_held_vertex_is_under_the_pointer_after_every_frame(ope
 def test_within_reach_the_held_vertex_follows_on_finer_grids(open_page):
     """The same at 8 px a frame on finer grids, where one coarse correction a step must carry
     the hand's pull through the cloth: it trailed 31.6 px on Two corners at 120x120 while the
-    correction's Hessian held a far hand's patch as by a stiff spring (cloth/vbd.py, assemble)."""
-    lags = worst_lag(open_page(), 'mouse', 8.0, (('towel', 60), ('curtain', 120), ('corners', 120)))
+    correction's Hessian held a far hand's patch as by a stiff spring (cloth/vbd.py, assemble),
+    and 1.6 px at a 200x200 chain's free corner before the sweeps near a hand (NEAR_SWEEPS)."""
+    lags = worst_lag(open_page(), 'mouse', 8.0, (('towel', 60), ('curtain', 120), ('corners', 120),
+                                                 ('chain', 200)))
     assert all(0 <= v <= 1.5 for v in lags.values()), lags
 
 
@@ -336,4 +338,13 @@ def test_a_fast_flick_within_reach_is_followed_within_a_pixel_and_a_half(open_pa
     Not the flag: at this speed its wind and the flick together pull harder than the hand's
     20 N, and on the exact steps its held vertex trails 2.6 px (beyond reach, as it should be)."""
     lags = worst_lag(open_page(), 'mouse', 20.0, ('curtain', 'chain', 'corners', ('towel', 60)))
+    assert all(0 <= v <= 1.5 for v in lags.values()), lags
+
+
+def test_a_fast_flick_on_a_fine_grid_is_followed_within_a_pixel_and_a_half(open_page):
+    """The same flick on 120x120 grids, where the scene's budget leaves the cloth between the
+    grip and the coarse grid's scale behind: 2.9 px on the curtain, 6.1 px on Two corners and
+    5.5 px on the towel before a held cloth's steps got one more correction and the sweeps near
+    the hand (cloth/vbd.py, NEAR_SWEEPS)."""
+    lags = worst_lag(open_page(), 'mouse', 20.0, (('curtain', 120), ('corners', 120), ('towel', 120)))
     assert all(0 <= v <= 1.5 for v in lags.values()), lags
