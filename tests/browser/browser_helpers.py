@@ -16,6 +16,7 @@ ARGS = ['--no-sandbox', '--enable-unsafe-swiftshader', '--disable-background-net
         '--disable-component-update', '--disable-sync', '--no-first-run', '--disable-quic',
         '--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE localhost , EXCLUDE 127.0.0.1']
 VIEWPORT = {'width': 1000, 'height': 700}
+BACKGROUND_MAX = 30  # every channel of the page's background colour is below this
 
 
 def page_url(query=''):

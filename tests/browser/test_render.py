@@ -5,7 +5,7 @@ import time
 
 import pytest
 
-from browser_helpers import load_paused
+from browser_helpers import BACKGROUND_MAX, load_paused
 
 from cloth.keys import MODEL
 from cloth.measure import BINS_PER_DECADE
@@ -14,7 +14,6 @@ from cloth.presets import PRESETS
 # Four vertices in a row, 1 m apart, all pinned, no gravity: nothing moves unless dragged.
 ROW = {'model': MODEL, 'cols': 4, 'rows': 1, 'spacing': 1.0, 'pins': [0, 1, 2, 3], 'gravity': [0, 0],
        'solver': 'jakobsen'}
-BACKGROUND_MAX = 30  # every background channel is below this
 
 
 def stretched_row(pg, lift_px=60, drag_px=0):

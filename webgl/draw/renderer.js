@@ -230,6 +230,7 @@ export const clothRenderer = (function () {
       // the scratch that finds them; made per scene, the indices again when edges go.
       let cellData = new Float32Array(0), cellSum = new Float32Array(0);
       let cellIdx = new Uint32Array(0), right = new Uint8Array(0), down = new Uint8Array(0);
+      let far = new Uint8Array(0), nFar = 0;
       let cellView = cellData, nCellIdx = 0, cellsFor = -1, cols = 0, rows = 0;
       let edgeData = new Float32Array(0), markData = new Float32Array(0);
       let edgeView = edgeData;  // edgeData's first 6 * n_edges floats, made once per scene
@@ -323,6 +324,7 @@ export const clothRenderer = (function () {
           cellSum = new Float32Array(nv);
           right = new Uint8Array(nv);
           down = new Uint8Array(nv);
+          far = new Uint8Array(nv);
           gl.bindBuffer(gl.ARRAY_BUFFER, cellBuf);
           gl.bufferData(gl.ARRAY_BUFFER, cellData.byteLength, gl.DYNAMIC_DRAW);
         }
@@ -347,9 +349,10 @@ export const clothRenderer = (function () {
       }
 
       // The intact cells' triangles (its four structural edges all there), for the edges
-      // the snapshot has: again only when their number changes (a tear or a cut).
+      // the snapshot has: again only when their number changes (a tear or a cut), and every
+      // frame while a vertex is far outside the panel (vertexValues), without the cells at it.
       function findCells(snap) {
-        if (cellsFor === snap.n_edges) return;
+        if (cellsFor === snap.n_edges && nFar === 0) return;
         const nv = snap.n_verts, ea = snap.edge_a, eb = snap.edge_b;
         for (let k = 0; k < nv; k++) { right[k] = 0; down[k] = 0; }
         for (let e = 0; e < snap.n_edges; e++) {
@@ -362,21 +365,35 @@ export const clothRenderer = (function () {
           for (let c = 0; c + 1 < cols; c++) {
             const k = r * cols + c;
             if (!right[k] || !down[k] || !right[k + cols] || !down[k + 1]) continue;
+            if (nFar > 0 && (far[k] || far[k + 1] || far[k + cols] || far[k + cols + 1])) continue;
             cellIdx[nCellIdx++] = k; cellIdx[nCellIdx++] = k + 1; cellIdx[nCellIdx++] = k + cols;
             cellIdx[nCellIdx++] = k + 1; cellIdx[nCellIdx++] = k + cols + 1; cellIdx[nCellIdx++] = k + cols;
           }
         }
         gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, cellIdxBuf);
         gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, cellIdx.subarray(0, nCellIdx), gl.DYNAMIC_DRAW);
-        cellsFor = snap.n_edges;
+        cellsFor = nFar > 0 ? -1 : snap.n_edges;
       }
 
       // Each vertex's colour value into cellData (with its position): the largest of its
       // structural edges' values (strain: the brightest edge there, as the edges would show
       // it; a curtain's rows are slack and its columns carry the weight, and a mean would
-      // halve it), or its node stress.
+      // halve it), or its node stress. And which vertices are farther than the panel's own
+      // size outside it: a filled cell is a few pixels, so a cell at such a vertex is either
+      // off the panel altogether or torn across it by a cloth that blew up (XPBD on Two
+      // corners at 200x200), whose 40,000 cells, each as large as the panel, took a software
+      // rasteriser 80 s a frame. findCells leaves those cells out.
       function vertexValues(snap, stressMode) {
         const nv = snap.n_verts, pos = snap.pos, cd = cellData;
+        const b = box(), x0 = b.x - b.w, x1 = b.x + 2 * b.w, y0 = b.y - b.h, y1 = b.y + 2 * b.h;
+        nFar = 0;
+        for (let k = 0; k < nv; k++) {
+          const cx = ox + s * pos[2 * k], cy = oy - s * pos[2 * k + 1];
+          // (a NaN fails every comparison: far)
+          const inside = cx >= x0 && cx <= x1 && cy >= y0 && cy <= y1;
+          far[k] = inside ? 0 : 1;
+          if (!inside) nFar++;
+        }
         if (stressMode) {
           const q = snap.vertex_value;
           for (let k = 0; k < nv; k++) cellSum[k] = q[k];
@@ -439,8 +456,8 @@ export const clothRenderer = (function () {
         const stressMode = mode === 'stress';
         const fill = bigIndices && cols > 1 && rows > 1 && spacing * s < FILL_CELL_CSS;
         if (fill) {
-          findCells(snap);
           vertexValues(snap, stressMode);
+          findCells(snap);
         } else if (stressMode) {
           const q = snap.vertex_value;
           for (let e = 0, o = 0; e < ne; e++, o += 6) {
