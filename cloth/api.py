@@ -8,7 +8,7 @@ from cloth.host import to_json, kind_of, is_finite, parse_json
 from cloth.keys import KEYS, OPS, MAX_FRAMES, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, \
     MAX_SCENE_BYTES, SCENE_FIELDS, MODEL
 from cloth.values import fail
-from cloth.solvers import SOLVERS, SOLVER_LABELS, DEFAULT_SOLVER, SEED_SOLVER
+from cloth.solvers import SOLVERS, SOLVER_LABELS, DEFAULT_SOLVER, SEED_SOLVER, MEASURED
 from cloth.fabrics import FABRICS, DEFAULT_FABRIC
 from cloth.scene import parse_scene, too_large, unused_settings, legacy_note
 from cloth.presets import PRESETS, preset_scene, preset_view
@@ -60,10 +60,10 @@ def schema():
     other parts check against: [keys, solvers, default solver, action ops, most actions, most
     panels, most vertices, the Scene section's fields, the solvers' labels, the seed's solver,
     a hand's force (N), a hand's grip radius (m), the model, the imbalance a cloth at rest has
-    at most]. The page derives its fields, the compare editor and the recorder from these, so
+    at most, the solvers that measure it]. The page derives its fields, the compare editor and the recorder from these, so
     that a key is declared once."""
     return [KEYS, SOLVERS, DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, SCENE_FIELDS,
-            SOLVER_LABELS, SEED_SOLVER, HAND_FORCE, HAND_RADIUS, MODEL, SLEEP_IMBALANCE]
+            SOLVER_LABELS, SEED_SOLVER, HAND_FORCE, HAND_RADIUS, MODEL, SLEEP_IMBALANCE, MEASURED]
 
 
 def notes(cloth):

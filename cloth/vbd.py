@@ -45,6 +45,8 @@ LABEL = 'Vertex descent + multigrid'
 BUDGET = [1, 5, 1]
 # Its steps are BDF2 (cloth/integrate.py), backward Euler after one left off balance.
 ORDER = 2
+# Its last sweep measures cloth.imbalance (sweep).
+RESIDUAL = True
 # The coarse operators are reused for this many steps: they are the Hessian where the cloth
 # was, and a rebuild costs about six sweeps (measured at 60x60); a cloth that moved more than a
 # spacing since gets new ones at once.

@@ -40,7 +40,7 @@ export const clothCore = (function (api) {
              maxActions: given[4], maxPanels: given[5], maxVertices: given[6],
              sceneFields: given[7].map(function (f) { return { key: f[0], hint: f[1], axis: f[2], parts: f[3].slice() }; }),
              solverLabels: given[8].slice(), seedSolver: given[9], handForce: given[10],
-             handRadius: given[11], model: given[12], restImbalance: given[13] };
+             handRadius: given[11], model: given[12], restImbalance: given[13], measured: given[14].slice() };
   })();
 
   const core = {
@@ -72,7 +72,8 @@ export const clothCore = (function (api) {
     // a key of two numbers: parts, the Scene attributes that hold them, and axis, the field's),
     // solverLabels (by solvers' index), seedSolver, handForce (a hand's most pull, N),
     // handRadius (its grip, m), model (the one scenes run under), restImbalance (the most
-    // unbalanced force a cloth at rest has, over its weight)}. Made once; callers must not
+    // unbalanced force a cloth at rest has, over its weight), measured (the solvers whose solve
+    // measures that imbalance)}. Made once; callers must not
     // change it.
     schema: function () { return SCHEMA; },
     // edgesOf(cols, rows) -> [structural edges, all edges] of such a grid (cloth/topology.py).

@@ -25,6 +25,11 @@ export const clothReadouts = (function () {
     const s = clothScenes, name = s.materialOf(snap.scene.stretch, snap.scene.shear, snap.scene.density);
     const fabric = name === 'custom' ? snap.scene.stretch + ' N/m' : s.MATERIALS[name].label.split(' (')[0].toLowerCase();
     const off = snap.imbalance;
+    // A solver that does not measure its balance (XPBD) is not said to be balanced.
+    if (core.schema().measured.indexOf(snap.scene.solver) < 0) {
+      return { name: what, note: fabric + ' · balance not measured by this solver' };
+    }
+    if (!isFinite(off)) return { name: what, note: fabric + ' · not finite: the solve blew up' };
     // Past a vertex's weight (a fluttering flag, a hard drag) a percentage reads as noise
     // (7859%): the legend says in motion, and by how many weights.
     const balance = !(off > 0) ? 'balanced' : off <= core.schema().restImbalance ? 'balanced to ' + fmtPct(off)
