@@ -60,8 +60,8 @@ def schema():
     other parts check against: [keys, solvers, default solver, action ops, most actions, most
     panels, most vertices, the Scene section's fields, the solvers' labels, the seed's solver,
     a hand's force (N), a hand's grip radius (m), the model, the imbalance a cloth at rest has
-    at most, the solvers that measure it]. The page derives its fields, the compare editor and the recorder from these, so
-    that a key is declared once."""
+    at most, the solvers that measure it]. The page derives its fields, the compare editor and
+    the recorder from these, so that a key is declared once."""
     return [KEYS, SOLVERS, DEFAULT_SOLVER, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, SCENE_FIELDS,
             SOLVER_LABELS, SEED_SOLVER, HAND_FORCE, HAND_RADIUS, MODEL, SLEEP_IMBALANCE, MEASURED]
 

@@ -1,7 +1,8 @@
 """The solvers, registered: a solver is a module with NAME, LABEL, BUDGET (its own substeps,
 iterations and corrections), ORDER (the highest order of cloth/integrate.py's steps it takes;
-0: it has its own integrator), RESIDUAL (whether its solve measures cloth.imbalance), prepare(cloth) (its work arrays) and a step's three stages,
-predict(cloth), solve(cloth) and finish(cloth). Adding one is its module and one line here.
+0: it has its own integrator), RESIDUAL (whether its solve measures cloth.imbalance),
+prepare(cloth) (its work arrays) and a step's three stages, predict(cloth), solve(cloth) and
+finish(cloth). Adding one is its module and one line here.
 
 The membrane's solvers share the BDF2 integrator (cloth/integrate.py) and differ in how they
 minimise a step's energy; the seed's method has its own Verlet."""

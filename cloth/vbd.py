@@ -26,9 +26,9 @@ Sweeps remove an error within a few vertices' reach only; the coarse-grid correc
 positions, restricted to coarser grids by Galerkin products, solved there, interpolated back as
 one direction, and a line search along it on G itself (G is convex along any line, so a
 quadratic fit and a halving fallback find its minimum). Per step: iterations // 2 sweeps,
-the corrections (a sweep between two), the other sweeps; while a hand holds the cloth, one more
-correction and NEAR_SWEEPS sweeps over the vertices near it (below). The coarse operators are rebuilt
-every REBUILD steps, or at once when a vertex has moved more than a spacing since they were
+the corrections (a sweep between two), the other sweeps; while a hand holds the cloth, one
+more correction and NEAR_SWEEPS sweeps over the vertices near it (below). The coarse
+operators are rebuilt every REBUILD steps, or at once when a vertex has moved more than a spacing since they were
 made, or the topology, the pins or the hands changed.
 """
 

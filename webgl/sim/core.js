@@ -73,8 +73,7 @@ export const clothCore = (function (api) {
     // solverLabels (by solvers' index), seedSolver, handForce (a hand's most pull, N),
     // handRadius (its grip, m), model (the one scenes run under), restImbalance (the most
     // unbalanced force a cloth at rest has, over its weight), measured (the solvers whose solve
-    // measures that imbalance)}. Made once; callers must not
-    // change it.
+    // measures that imbalance)}. Made once; callers must not change it.
     schema: function () { return SCHEMA; },
     // edgesOf(cols, rows) -> [structural edges, all edges] of such a grid (cloth/topology.py).
     edgesOf: function (cols, rows) { return api.edges_of(cols, rows); },
