@@ -269,6 +269,18 @@ class Firefox(Engine):
             del m
             gc.collect()
 
+    def restart(self):
+        """A new Firefox after the last one died (ESR once exited with SIGSEGV loading the page,
+        and every later test of the run failed on its dead session). Its log is kept beside."""
+        try:
+            self.quit()
+        except Exception:
+            pass
+        if self.log.exists():
+            self.log.replace(self.log.with_suffix('.died.log'))
+        self.start()
+        self.current, self.size = None, None
+
 
 class WebKit(Engine):
     name = 'webkit'
