@@ -1,4 +1,4 @@
-"""Geometric multigrid for the grid's linearised step: the coarse-grid correction of cloth/vbd.py.
+"""Geometric multigrid for the linearised step: the coarse grids of cloth/coarse.py.
 
 Gauss-Seidel sweeps (the seed's relaxation, or vertex descent) remove an error in a few sweeps
 only where it varies from vertex to vertex; an error that varies over the whole cloth (a
@@ -9,7 +9,7 @@ on a grid with half the spacing in each direction it varies twice as fast per ve
 sweeps there remove it, down to a grid of a few vertices, solved exactly.
 
 The operators. Level 0 is the cloth's grid; its operator A0 is the Hessian of the step's energy
-at the current positions (vbd.assemble), a 9-point stencil of 2x2 blocks: vertex (r, c) couples
+at the current positions (coarse.assemble), a 9-point stencil of 2x2 blocks: vertex (r, c) couples
 to (r + dr, c + dc), dr, dc in {-1, 0, 1}, through the structural edges and diagonals that join
 them. Level l + 1 has the nodes 0, 2, 4, ... of each dimension of level l and its last one (so
 any size coarsens), and P_l interpolates bilinearly from it; A_{l+1} = P_l^T A_l P_l (Galerkin),
