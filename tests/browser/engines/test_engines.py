@@ -122,6 +122,7 @@ def cli_cases(cli_run):
     CPython run made once a suite run (tests/conftest.py cli_run)."""
     cases = [(json.dumps(CATALOGUE[name][0]), CATALOGUE[name][1]) for name in sorted(CATALOGUE)]
     cases += [(text, 1) for text in BAD]
+    cli_run.ahead(cases)
     out = []
     for text, frames in cases:
         try:
