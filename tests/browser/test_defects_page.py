@@ -160,7 +160,7 @@ def test_100000_shuffled_actions_load_in_the_page_and_match_the_cli(open_page):
             for f in range(100000)]
     random.Random(2).shuffle(acts)
     text = json.dumps({'cols': 4, 'rows': 3, 'spacing': 0.1, 'actions': acts})
-    pg = open_page()
+    pg = open_page('?paused=1')
     out = pg.js('(t) => { const t0 = performance.now(); const r = clothCore.run(t, 30);'
                 ' return [r, performance.now() - t0]; }', text)
     assert out[0] == run(text, 30)
@@ -215,7 +215,7 @@ def test_deep_nesting_gives_the_cli_message_in_the_page(open_page, text):
     from cloth.scene import SceneError
     with pytest.raises(SceneError) as err:
         run(text, 1)
-    pg = open_page()
+    pg = open_page('?paused=1')
     got = pg.js('(t) => { try { clothCore.run(t, 1); return ""; } catch (e) { return e.message; } }', text)
     assert got == str(err.value)
     pg.js('(t) => { try { clothApp.loadScene(t); } catch (e) {} }', text)
@@ -558,7 +558,7 @@ def overlap(a, b):
 
 
 def test_overlays_never_collide(open_page):
-    pg = open_page()
+    pg = open_page('?paused=1')
     pg.js("clothApp.setColorMode('stress')")
     for size in [(320, 480), (360, 640), (500, 700), (720, 900), (721, 500), (1000, 700), (1920, 1080)]:
         pg.set_viewport_size({'width': size[0], 'height': size[1]})
@@ -705,7 +705,7 @@ def test_the_legend_says_how_far_the_solver_is_from_balance(open_page):
 def test_sideways_wheels_never_leave_the_page(open_page):
     """Two sideways wheels (a trackpad swipe) were Chromium's "back" gesture: the page was
     gone, found by the pointer fuzzing of test_soak.py."""
-    pg = open_page()
+    pg = open_page('?paused=1')
     for x, y, dx, dy in [(67, 288, -269, -25), (773, 690, 137, 104), (900, 300, -300, 5), (500, 200, 300, 0)]:
         pg.mouse.move(x, y)
         pg.mouse.wheel(dx, dy)

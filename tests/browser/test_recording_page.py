@@ -464,7 +464,7 @@ def test_open_a_file_by_the_picker_and_by_a_drop(open_page, tmp_path):
     b'{"cols": 3, "rows": 2, "spacing": 0.1, "actions": [{"frame": 1, "op": "set", "scene": {"cols": 4}}]}',
 ])
 def test_a_bad_file_gets_the_clis_message_and_the_old_scene_runs_on(open_page, tmp_path, data):
-    pg = open_page()
+    pg = open_page('?paused=1')
     path = tmp_path / 'bad.json'
     path.write_bytes(data)
     expected = subprocess.run([sys.executable, '-m', 'cloth', 'run', str(path), '--frames', '1'],

@@ -23,7 +23,7 @@ CLAMPS = [('#cols', 999, spec('cols').field_hi), ('#rows', 0, 1), ('#iterations'
 
 
 def test_out_of_range_input_is_clamped_with_a_note(open_page):
-    pg = open_page()
+    pg = open_page('?paused=1')
     for field, value, expect in CLAMPS:
         set_input(pg, field, value)
         note = pg.locator('#note')
@@ -41,7 +41,7 @@ def test_out_of_range_input_is_clamped_with_a_note(open_page):
 
 
 def test_grid_size_change_rebuilds_the_scene(open_page):
-    pg = open_page()
+    pg = open_page('?paused=1')
     set_input(pg, '#cols', 12)
     set_input(pg, '#rows', 9)
     st = pg.state()
@@ -73,7 +73,7 @@ def test_bad_scene_shows_the_error_and_the_old_scene_keeps_running(open_page):
 
 
 def test_scene_json_box_loads_and_reports(open_page):
-    pg = open_page()
+    pg = open_page('?paused=1')
     pg.click('#json-box summary')
     pg.click('#btn-show-json')
     shown = json.loads(pg.input_value('#scene-json'))
