@@ -17,7 +17,7 @@ def run_without_engines(ci):
     env.pop('CI', None)
     if ci:
         env['CI'] = 'true'
-    return subprocess.run([sys.executable, '-m', 'pytest', '-q', '-rs', '-p', 'no:cacheprovider',
+    return subprocess.run([sys.executable, '-m', 'pytest', '-q', '-rs', '-n', '0', '-p', 'no:cacheprovider',
                            'tests/browser/engines/test_engines.py', '-k', 'opens_from_file'],
                           cwd=ROOT, env=env, capture_output=True, text=True, timeout=300)
 
