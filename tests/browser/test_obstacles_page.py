@@ -3,7 +3,7 @@ recorded and replayed. Runs in Chromium here and in Firefox and WebKit (tests/en
 import json
 import sys
 
-from browser_helpers import ROOT, wait_settled
+from browser_helpers import ROOT, load_paused, wait_settled
 
 sys.path.insert(0, str(ROOT))
 from cloth import api  # noqa: E402
@@ -116,7 +116,7 @@ def test_the_wind_and_gusts_fields_set_the_air_live_and_record_it(open_page):
     positions; nonsense keeps the old value and says why. On a 16x12 curtain: the CPython
     replay of the 40x30 preset took 11 s of the three engines' runs each."""
     pg = open_page('?paused=1')
-    pg.js('(t) => { clothApp.loadScene(t); clothApp.setPaused(true); }', json.dumps(preset_scene('curtain', 16, 12)))
+    load_paused(pg, json.dumps(preset_scene('curtain', 16, 12)))
     pg.js('clothApp.advance(30)')
     typed = '''([id, text]) => { const el = document.getElementById(id); el.value = text;
                                   el.dispatchEvent(new Event('change')); }'''

@@ -12,6 +12,9 @@ import pytest
 from cloth.scene import MAX_SCENE_BYTES, too_large
 
 SMALL = {'cols': 3, 'rows': 3, 'spacing': 0.1, 'pins': [0, 2]}
+# SMALL's text around a name that pads it to a size: HEAD + padding + TAIL.
+HEAD = json.dumps(dict(SMALL, name=''))[:-2]                # ..."name": "
+TAIL = '"}'
 
 
 def bomb(inflated):
@@ -19,14 +22,12 @@ def bomb(inflated):
     padding). Never held whole here either: a megabyte of padding is deflated once and its
     bytes repeated, which is the stream deflating every megabyte gives, since a full flush
     after each leaves the deflater as it was (deflating the 1.9 GB bomb took 12 s)."""
-    head = json.dumps(dict(SMALL, name=''))[:-2]            # ..."name": "
-    tail = '"}'
     z = zlib.compressobj(9, zlib.DEFLATED, -15)
-    out = [z.compress(head.encode()), z.flush(zlib.Z_FULL_FLUSH)]
-    megabytes, rest = divmod(inflated - len(head) - len(tail), 1 << 20)
+    out = [z.compress(HEAD.encode()), z.flush(zlib.Z_FULL_FLUSH)]
+    megabytes, rest = divmod(inflated - len(HEAD) - len(TAIL), 1 << 20)
     if megabytes:
         out.append((z.compress(b'a' * (1 << 20)) + z.flush(zlib.Z_FULL_FLUSH)) * megabytes)
-    out.append(z.compress(b'a' * rest + tail.encode()))
+    out.append(z.compress(b'a' * rest + TAIL.encode()))
     out.append(z.flush())
     return 'scene=' + base64.urlsafe_b64encode(b''.join(out)).decode().rstrip('=')
 
@@ -104,10 +105,9 @@ def test_a_file_or_a_box_past_the_limit_is_refused_unread(open_page, tmp_path):
     # The box: multi-byte characters count as their UTF-8 bytes (a third of the limit in
     # characters, each 3 bytes, is one byte too many with the rest of the scene).
     # Written in the page (sent from here, the 5.6 M characters took 12 s).
-    head = json.dumps(dict(SMALL, name=''))[:-2]            # ..."name": "
     pg.js("document.getElementById('json-box').open = true")
     pg.js("([head, n, tail]) => { document.getElementById('scene-json').value = head + '\u20ac'.repeat(n) + tail; }",
-          [head, MAX_SCENE_BYTES // 3, '"}'])
+          [HEAD, MAX_SCENE_BYTES // 3, TAIL])
     pg.locator('#btn-load-json').click()
     assert too_large() in banner(pg) and pg.state()['positions'] == before
 
@@ -129,12 +129,11 @@ def into_the_box(pg, kind):
     pg.js('''() => { document.getElementById('json-box').open = true;
       document.getElementById('scene-json').value = ''; }''')
     before = pg.state()['positions']
-    head, tail = json.dumps(dict(SMALL, name='')).split('""')   # a scene named with n b's
-    done = pg.js(INTO_BOX, [kind, head + '"', MAX_SCENE_BYTES + 1, '"' + tail])
+    done = pg.js(INTO_BOX, [kind, HEAD, MAX_SCENE_BYTES + 1, TAIL])
     assert done['shown'] is False and done['value'] == 0, done
     assert too_large() in done['error'] and pg.state()['positions'] == before, done
     pg.js("document.getElementById('banner-close').click()")
-    done = pg.js(INTO_BOX, [kind, head + '"', 3000000, '"' + tail])
+    done = pg.js(INTO_BOX, [kind, HEAD, 3000000, TAIL])
     assert done['shown'] is False and done['value'] == 0 and done['error'] == '', done
     assert '3.0 MB' in done['note'] and 'Load reads it' in done['note'], done
     pg.locator('#btn-load-json').click()

@@ -16,7 +16,7 @@ import json
 import sys
 import time
 
-from browser_helpers import DIST, ROOT, free_vertex, page_url, png_rgb
+from browser_helpers import DIST, ROOT, free_vertex, load_paused, page_url, png_rgb
 import test_page
 import test_recording_page as rec
 import test_render
@@ -541,7 +541,7 @@ def test_compare_mode(open_page):
     at it); the recording replays each panel in the CLI. On a 20x15 curtain (the 40x30 preset's
     replay took CPython 10 s an engine)."""
     pg = open_page('?paused=1')
-    pg.js('(t) => { clothApp.loadScene(t); clothApp.setPaused(true); }', json.dumps(preset_scene('curtain', 20, 15)))
+    load_paused(pg, json.dumps(preset_scene('curtain', 20, 15)))
     assert pg.js('(l) => clothApp.compare(l)', PAIR)
     pg.js('clothApp.advance(30)')
     k = 14 * 20 + 10
