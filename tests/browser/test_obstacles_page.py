@@ -3,12 +3,11 @@ recorded and replayed. Runs in Chromium here and in Firefox and WebKit (tests/en
 import json
 import sys
 
-from browser_helpers import ROOT, load_paused, wait_settled
+from browser_helpers import ROOT, default_preset_at, load_paused, wait_settled
 
 sys.path.insert(0, str(ROOT))
 from cloth import api  # noqa: E402
 from cloth.keys import MODEL  # noqa: E402
-from cloth.presets import preset_scene  # noqa: E402
 sys.path.pop(0)
 
 
@@ -113,10 +112,10 @@ def test_the_wind_and_gusts_fields_set_the_air_live_and_record_it(open_page):
     """The air's controls (issue #24.2) in the panel: a value typed into Wind and Gusts (the
     field's change event, what a person's Enter or leaving the field sends) sets the running
     cloth's air, is recorded as a `set`, and the recording replays in CPython to the page's
-    positions; nonsense keeps the old value and says why. On a 16x12 curtain: the CPython
-    replay of the 40x30 preset took 11 s of the three engines' runs each."""
+    positions; nonsense keeps the old value and says why. The default preset at 16x12: CPython's
+    replay of it at 40x30 took 11 s in each engine's run."""
     pg = open_page('?paused=1')
-    load_paused(pg, json.dumps(preset_scene('curtain', 16, 12)))
+    load_paused(pg, default_preset_at(16, 12))
     pg.js('clothApp.advance(30)')
     typed = '''([id, text]) => { const el = document.getElementById(id); el.value = text;
                                   el.dispatchEvent(new Event('change')); }'''

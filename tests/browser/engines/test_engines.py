@@ -16,7 +16,7 @@ import json
 import sys
 import time
 
-from browser_helpers import DIST, ROOT, free_vertex, load_paused, page_url, png_rgb
+from browser_helpers import DIST, ROOT, free_vertex, default_preset_at, load_paused, page_url, png_rgb
 import test_page
 import test_recording_page as rec
 import test_render
@@ -31,7 +31,6 @@ from test_compare_page import PAIR
 sys.path.insert(0, str(ROOT))
 from cloth import api  # noqa: E402
 from cloth.keys import MODEL  # noqa: E402
-from cloth.presets import preset_scene  # noqa: E402
 from cloth.scene import SceneError  # noqa: E402
 sys.path.pop(0)
 
@@ -538,10 +537,10 @@ def test_open_a_file_by_the_picker_and_by_a_drop(open_page, tmp_path):
 def test_compare_mode(open_page):
     """The Seed vs default pair: a real mouse drag in panel 2 holds the hand under the pointer
     there, and panel 1's hand moves by the same displacement (the seed's method puts the vertex
-    at it); the recording replays each panel in the CLI. On a 20x15 curtain (the 40x30 preset's
-    replay took CPython 10 s an engine)."""
+    at it); the recording replays each panel in the CLI. The default preset at 20x15 (CPython's
+    replay of it at 40x30 took 10 s an engine)."""
     pg = open_page('?paused=1')
-    load_paused(pg, json.dumps(preset_scene('curtain', 20, 15)))
+    load_paused(pg, default_preset_at(20, 15))
     assert pg.js('(l) => clothApp.compare(l)', PAIR)
     pg.js('clothApp.advance(30)')
     k = 14 * 20 + 10
