@@ -77,7 +77,8 @@ def main(argv=None):
 def dispatch(args, page, progress, meta):
     if args.fabrics:
         from bench import fabrics
-        rows = fabrics.run(page, args.quick, progress)
+        meta.update(fabrics.plan(args.quick))
+        rows = fabrics.run(page, meta, progress)
         return 'fabrics', fabrics.markdown(rows, meta), rows, []
     if args.releases:
         from bench import releases

@@ -55,6 +55,37 @@ def test_a_smooth_field_sampled_on_another_grid_is_itself():
     assert not np.allclose(bfab.sample(field(17)[::-1], 17, 5), field(5))
 
 
+
+def test_a_field_restricted_to_a_coarser_grid_keeps_each_patch_mean_and_the_force_across_it():
+    """bench/fabrics.restrict: a grid's edge field on a coarser grid's edges, each the mean over
+    the patch the coarse edge stands for (its length by a spacing across it, half a spacing at a
+    border)."""
+    fine, coarse = 13, 4                                   # 12 cells and 3: not nested
+    u_edge = (np.arange(fine - 1) + 0.5) / (fine - 1)      # where the fine edges' middles are
+    # Along rows, a field linear along the edges and anything across them: each coarse edge gets
+    # the line's value at its middle (the fine edges tile it exactly).
+    along_rows = np.tile(2.0 + 3.0 * u_edge, (fine, 1))
+    along_cols = np.ones((fine - 1, fine))
+    r, c = bfab.restrict((along_rows, along_cols), fine, coarse)
+    u_coarse = (np.arange(coarse - 1) + 0.5) / (coarse - 1)
+    assert r.shape == (coarse, coarse - 1) and c.shape == (coarse - 1, coarse)
+    assert np.allclose(r, 2.0 + 3.0 * u_coarse[None, :]) and np.allclose(c, 1.0)
+    # A grid restricted to itself is itself.
+    noise = np.random.default_rng(1).random((fine, fine - 1))
+    r, c = bfab.restrict((noise, noise.T), fine, fine)
+    assert np.allclose(r, noise) and np.allclose(c, noise.T)
+    # One fine column of strain, the rest none: the force across a row (strain times the width
+    # each edge stands for) is kept, spread over the coarse edge whose patch holds it.
+    band = np.zeros((fine - 1, fine))
+    band[:, 5] = 1.0
+    width_fine = np.full(fine, 1.0 / (fine - 1))
+    width_fine[[0, -1]] *= 0.5
+    width_coarse = np.full(coarse, 1.0 / (coarse - 1))
+    width_coarse[[0, -1]] *= 0.5
+    c = bfab.restrict((np.zeros((fine, fine - 1)), band), fine, coarse)[1]
+    assert np.allclose(c @ width_coarse, (band @ width_fine)[0])
+    assert np.count_nonzero(c[0]) == 1
+
 def test_the_exact_pendulum_period_tends_to_the_small_swing_one():
     from cloth.reference import pendulum_period
     assert math.isclose(pendulum_period(1.0, 1e-6), 2 * math.pi / math.sqrt(9.81), rel_tol=1e-9)
