@@ -206,14 +206,14 @@ def correct(cloth):
                     cloth.mg_stale = True
                     break
     if cloth.mg_stale:
-        galerkin(fine, coarse, cloth.fixed)
+        galerkin(fine, coarse, cloth.uncorrected)
         for l in range(2, len(levels)):
             galerkin(levels[l - 1], levels[l], None)
         factor_dense(levels[len(levels) - 1])
         for t in range(2 * cloth.n_verts):
             cloth.mg_anchor[t] = cloth.pos[t]
         for t in range(cloth.n_verts):
-            cloth.mg_fixed[t] = cloth.fixed[t]
+            cloth.mg_fixed[t] = cloth.uncorrected[t]
             cloth.mg_grip[t] = cloth.grip[t]
         cloth.mg_stale = False
         cloth.mg_changed = 0
@@ -221,12 +221,12 @@ def correct(cloth):
         cloth.rebuilds += 1
     cloth.mg_age += 1
     b = cloth.coarse_b
-    restrict(fine, coarse, cloth.fixed, cloth.grad, b)
+    restrict(fine, coarse, cloth.uncorrected, cloth.grad, b)
     for t in range(2 * coarse.n):
         b[t] = -b[t]
     pcg(levels, 1, COARSE_STEPS, b, cloth.coarse_e)
     d = cloth.dirn
-    prolong(fine, coarse, cloth.fixed, cloth.coarse_e, d)
+    prolong(fine, coarse, cloth.uncorrected, cloth.coarse_e, d)
     slope = 0.0
     g = cloth.grad
     for t in range(2 * cloth.n_verts):

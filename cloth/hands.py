@@ -224,7 +224,10 @@ def refix(cloth):
     changed = 0
     for k in range(cloth.n_verts):
         cloth.falling[k] = 1 - held[cloth.piece[k]]
-        if cloth.fixed[k] != cloth.mg_fixed[k] or cloth.grip[k] != cloth.mg_grip[k]:
+        # A piece nothing holds carries no load for the coarse grids to spread: its guess is
+        # its fall and its sweeps do the rest (coarse.py).
+        cloth.uncorrected[k] = 1 if cloth.fixed[k] != 0 or cloth.falling[k] != 0 else 0
+        if cloth.uncorrected[k] != cloth.mg_fixed[k] or cloth.grip[k] != cloth.mg_grip[k]:
             changed = 1
     cloth.mg_changed = changed
 

@@ -164,6 +164,16 @@ def predict(cloth):
             by = y
             px = x + hp * keep * vx
             py = y + hp * keep * vy
+        if falling[k] != 0 and k2 == 1:
+            # Backward Euler puts all of gravity's h^2 g into a step's target: the velocity
+            # keep (v + g h) is a fall's, the position h^2 g / 2 below it, every step. A piece
+            # nothing holds takes half of it into its target and half into its base, so that
+            # v+ = (x+ - base) / h is the same and x+ is the fall's (each step backward Euler
+            # takes while the part that hangs is unbalanced left a cut piece 1.4 mm low).
+            bx -= 0.5 * ax
+            by -= 0.5 * ay
+            px -= 0.5 * ax
+            py -= 0.5 * ay
         base[i] = bx
         base[i + 1] = by
         pred[i] = px + ax

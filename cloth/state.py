@@ -52,6 +52,7 @@ class Cloth:
         self.pred = f64(2 * n)
         self.base = f64(2 * n)
         self.falling = i32(n)     # 1 where nothing holds the vertex's piece (hands.refix)
+        self.uncorrected = i32(n)  # 1 where a vertex takes no coarse correction: fixed or falling
         self.piece = i32(n)       # its connected piece (topology.label_pieces)
         self.stack = i32(n)
         self.piece_held = i32(n)
@@ -95,7 +96,7 @@ class Cloth:
         self.mg_stale = True
         self.mg_age = 0
         self.mg_changed = 0       # 1 while they differ from the fixed vertices and grips now
-        self.mg_fixed = i32(n)    # the fixed vertices and grips the coarse operators were made
+        self.mg_fixed = i32(n)    # `uncorrected` and the grips the coarse operators were made
         self.mg_grip = i32(n)     # for (hands.refix: a change of them makes the operators stale)
         self.near = i32(0)        # the vertices near a hand, and their marks (vbd.near_hands)
         self.near_mark = i32(0)

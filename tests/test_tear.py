@@ -108,25 +108,16 @@ def test_a_blade_along_an_edge_or_of_no_length_cuts_nothing():
 
 # ---- what is cut off falls free ---------------------------------------------------------------
 
-# After a cut the membrane's fall is not exact under the default solver (measured on pieces of
-# an 8x6 curtain). A piece the cut sets free has its history restarted (step.broke,
-# integrate.restart_at) and its centre kept where its momentum puts it (vbd.keep_momentum),
-# which brought a piece cut while it hung from 7 cm behind free fall after 1 s to 2.0 mm; what
-# is left is the step order, the whole cloth's: the falling piece takes backward Euler steps
-# whenever the piece that hangs is unbalanced (integrate.UNBALANCED), each h^2 g / 2 off a
-# fall, and the coarse correction interpolates across the cut, so each vertex of the piece is
-# moved by the one that hangs (1.3 mm sideways after 1 s, cut on the rest grid; dust 0.3 mm).
-# XPBD's stiff curtain (1e5 N/m) is not at rest within 3 s (5 mm/s), which the test asks first.
-CUT_PIECE_DRAGGED = core_bug('vbd: a piece cut off does not fall exactly (the coarse correction '
-                             'reaches across the cut; backward Euler steps while the rest is '
-                             'unbalanced): 1.3 mm off free fall after 1 s, dust 0.3 mm')
-CUT_NOT_EXACT = core_bug('vbd: a piece cut off while it hangs falls 2 mm off free fall in 1 s (backward '
-                         'Euler steps while the rest is unbalanced); XPBD: the stiff curtain is '
-                         'not at rest when cut (5 mm/s)')
+# After a cut a piece the cut sets free has its history restarted (step.broke,
+# integrate.restart_at), its centre kept where its momentum puts it (vbd.keep_momentum), its
+# target its fall even in the backward Euler steps the part that hangs takes while unbalanced
+# (integrate.predict), and no coarse correction (hands.refix: it reached across the cut and
+# moved the piece with the part that hangs, 1.3 mm sideways after 1 s). XPBD's stiff curtain
+# (1e5 N/m) is not at rest within 3 s (5 mm/s), which the test asks first.
+CUT_NOT_AT_REST = core_bug('xpbd: the stiff curtain is not at rest when cut (5 mm/s)')
 
 
-@pytest.mark.parametrize('solver', [pytest.param('vbd', marks=CUT_PIECE_DRAGGED),
-                                    'xpbd', 'jakobsen'])
+@pytest.mark.parametrize('solver', ['vbd', 'xpbd', 'jakobsen'])
 def test_what_is_cut_off_falls_free_and_the_rest_hangs_on(solver):
     """Cut on its rest grid (at rest, every edge at its rest length: the piece cut off is a
     piece no pin or hand holds, whose springs pull on nothing): each of its vertices falls
@@ -150,8 +141,7 @@ def test_what_is_cut_off_falls_free_and_the_rest_hangs_on(solver):
         assert abs(cloth.pos[2 * k + 1] - start[2 * k + 1]) < 1e-3
 
 
-@pytest.mark.parametrize('solver', [pytest.param('vbd', marks=CUT_NOT_EXACT),
-                                    pytest.param('xpbd', marks=CUT_NOT_EXACT)])
+@pytest.mark.parametrize('solver', ['vbd', pytest.param('xpbd', marks=CUT_NOT_AT_REST)])
 def test_a_piece_cut_off_while_it_hangs_at_rest_falls_free(solver):
     """A stiff curtain (stretch 1e5 N/m: its weight strains it by 5e-6) hangs at rest, and the
     air is stilled at the frame it is cut: the piece cut off falls as from rest, its centre of
@@ -189,7 +179,7 @@ def test_a_piece_cut_off_while_it_hangs_at_rest_falls_free(solver):
         assert off <= t * math.sqrt(2.0 * held / cloth.mass[k]) + 1e-9, k
 
 
-@pytest.mark.parametrize('solver', [pytest.param('vbd', marks=CUT_PIECE_DRAGGED), 'xpbd', 'jakobsen'])
+@pytest.mark.parametrize('solver', ['vbd', 'xpbd', 'jakobsen'])
 def test_cut_every_edge_a_dust_of_particles_in_exact_free_fall(solver):
     n = 6
     s = {'model': MODEL, 'cols': n, 'rows': n, 'spacing': 0.1, 'pins': [0, 1, 2], 'sleep': False,
