@@ -213,7 +213,7 @@ def correct(cloth):
         for t in range(2 * cloth.n_verts):
             cloth.mg_anchor[t] = cloth.pos[t]
         for t in range(cloth.n_verts):
-            cloth.mg_fixed[t] = cloth.uncorrected[t]
+            cloth.mg_uncorrected[t] = cloth.uncorrected[t]
             cloth.mg_grip[t] = cloth.grip[t]
         cloth.mg_stale = False
         cloth.mg_changed = 0

@@ -227,7 +227,7 @@ def refix(cloth):
         # A piece nothing holds carries no load for the coarse grids to spread: its guess is
         # its fall and its sweeps do the rest (coarse.py).
         cloth.uncorrected[k] = 1 if cloth.fixed[k] != 0 or cloth.falling[k] != 0 else 0
-        if cloth.uncorrected[k] != cloth.mg_fixed[k] or cloth.grip[k] != cloth.mg_grip[k]:
+        if cloth.uncorrected[k] != cloth.mg_uncorrected[k] or cloth.grip[k] != cloth.mg_grip[k]:
             changed = 1
     cloth.mg_changed = changed
 

@@ -13,7 +13,8 @@ at the current positions (coarse.assemble), a 9-point stencil of 2x2 blocks: ver
 to (r + dr, c + dc), dr, dc in {-1, 0, 1}, through the structural edges and diagonals that join
 them. Level l + 1 has the nodes 0, 2, 4, ... of each dimension of level l and its last one (so
 any size coarsens), and P_l interpolates bilinearly from it; A_{l+1} = P_l^T A_l P_l (Galerkin),
-again a 9-point stencil. A fixed vertex has no row in P_0 (its correction is 0).
+again a 9-point stencil. A vertex that takes no correction (fixed, or of a piece nothing holds:
+cloth.uncorrected) has no row in P_0 (its correction is 0).
 
 Storage: a level's operator is 27 doubles a node, 9 slots (dr + 1) * 3 + (dc + 1) of a
 symmetric 2x2 block (xx, xy, yy); every block of a spring's Hessian is symmetric, and

@@ -95,9 +95,9 @@ class Cloth:
         self.hand_lam = f64(0)
         self.mg_stale = True
         self.mg_age = 0
-        self.mg_changed = 0       # 1 while they differ from the fixed vertices and grips now
-        self.mg_fixed = i32(n)    # `uncorrected` and the grips the coarse operators were made
-        self.mg_grip = i32(n)     # for (hands.refix: a change of them makes the operators stale)
+        self.mg_changed = 0       # 1 while they differ from `uncorrected` and the grips now
+        self.mg_uncorrected = i32(n)  # `uncorrected` and the grips the coarse operators were
+        self.mg_grip = i32(n)     # made for (hands.refix: a change of them makes them stale)
         self.near = i32(0)        # the vertices near a hand, and their marks (vbd.near_hands)
         self.near_mark = i32(0)
         # measures: per structural edge the value the colours show, per vertex the seed's

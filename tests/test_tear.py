@@ -112,7 +112,7 @@ def test_a_blade_along_an_edge_or_of_no_length_cuts_nothing():
 # integrate.restart_at), its centre kept where its momentum puts it (vbd.keep_momentum), its
 # target its fall even in the backward Euler steps the part that hangs takes while unbalanced
 # (integrate.predict), and no coarse correction (hands.refix: it reached across the cut and
-# moved the piece with the part that hangs, 1.3 mm sideways after 1 s). XPBD's stiff curtain
+# moved the piece with the part that hangs, 0.7 mm sideways after 1 s). XPBD's stiff curtain
 # (1e5 N/m) is not at rest within 3 s (5 mm/s), which the test asks first.
 CUT_NOT_AT_REST = core_bug('xpbd: the stiff curtain is not at rest when cut (5 mm/s)')
 
