@@ -14,7 +14,6 @@ within 25% of each other; at rest within 20 s everywhere.
 """
 
 import json
-import math
 
 import numpy as np
 
@@ -22,6 +21,7 @@ from cloth.api import load
 from cloth.fabrics import FABRICS
 from cloth.presets import preset_scene
 from bench.front import errors_of, exact_of, AWAY, REST
+from cloth.reference import field_error
 
 RUN_SECONDS = 20.0
 SCENES = ['corners', 'curtain', 'towel']
@@ -139,10 +139,6 @@ def far_edges(cloth, x):
     return far(0.5 * (p[:, :-1] + p[:, 1:])), far(0.5 * (p[:-1] + p[1:]))
 
 
-def relative(values, ref):
-    return math.sqrt(float(((values - ref) ** 2).mean())) / math.sqrt(float((ref ** 2).mean()))
-
-
 def across(runs, scene, fabric_name, sizes):
     """Each grid's field against the finest's, away from the fixed vertices: {n: (patch means,
     point samples)}, relative RMS differences.
@@ -168,7 +164,10 @@ def across(runs, scene, fabric_name, sizes):
         along_rows, along_cols = restrict(edge_fields(c, xn), n, coarse)
         patches[n] = np.concatenate([along_rows[keep_rows], along_cols[keep_cols]])
         points[n] = sample(vertex_field(c, xn), n, coarse)[keep]
-    return {n: (relative(patches[n], patches[finest]), relative(points[n], points[finest]))
+    every = np.ones(len(patches[finest]), dtype=bool)
+    all_points = np.ones(len(points[finest]), dtype=bool)
+    return {n: (field_error(patches[n], patches[finest], every),
+                field_error(points[n], points[finest], all_points))
             for n in sizes if n != finest}
 
 
