@@ -21,7 +21,7 @@ from cloth.api import load
 from cloth.fabrics import FABRICS
 from cloth.presets import preset_scene
 from bench.front import errors_of, exact_of, AWAY, REST
-from cloth.reference import field_error
+from cloth.reference import field_error, tension_strain, away_from_fixed
 
 RUN_SECONDS = 20.0
 SCENES = ['corners', 'curtain', 'towel']
@@ -78,21 +78,18 @@ def sample(field, n_from, n_to):
     return rows[:, i0] * (1 - w)[None, :] + rows[:, i0 + 1] * w[None, :]
 
 
-def edge_fields(cloth, x):
-    """The structural edges' tension strain as two arrays: the edges along the rows (rows x
-    cols-1) and those along the columns (rows-1 x cols)."""
+def on_grid(cloth, values):
+    """Values of the structural edges (in the cloth's edge order) as two arrays: the edges along
+    the rows (rows x cols-1) and those along the columns (rows-1 x cols)."""
     m = cloth.n_struct
     a = np.array(cloth.edge_a[:m])
     b = np.array(cloth.edge_b[:m])
-    d = x[b] - x[a]
-    s = np.maximum(np.sqrt((d * d).sum(1)) / np.array(cloth.rest[:m]) - 1.0, 0.0)
-    lo = np.minimum(a, b)
-    r, c = np.divmod(lo, cloth.cols)
+    r, c = np.divmod(np.minimum(a, b), cloth.cols)
     flat = np.abs(b - a) == 1
-    along_rows = np.zeros((cloth.rows, cloth.cols - 1))
-    along_cols = np.zeros((cloth.rows - 1, cloth.cols))
-    along_rows[r[flat], c[flat]] = s[flat]
-    along_cols[r[~flat], c[~flat]] = s[~flat]
+    along_rows = np.zeros((cloth.rows, cloth.cols - 1), dtype=values.dtype)
+    along_cols = np.zeros((cloth.rows - 1, cloth.cols), dtype=values.dtype)
+    along_rows[r[flat], c[flat]] = values[flat]
+    along_cols[r[~flat], c[~flat]] = values[~flat]
     return along_rows, along_cols
 
 
@@ -125,20 +122,6 @@ def restrict(fields, n_from, n_to):
             overlap(n_to, n_from, True) @ along_cols @ overlap(n_to, n_from, False).T)
 
 
-def far_edges(cloth, x):
-    """Which of the structural edges of edge_fields' two arrays lie farther than AWAY from every
-    fixed vertex (midpoints)."""
-    p = x.reshape(cloth.rows, cloth.cols, 2)
-    fixed = x[np.array(cloth.fixed, dtype=bool)]
-
-    def far(mid):
-        best = np.full(mid.shape[:2], np.inf)
-        for f in fixed:
-            best = np.minimum(best, np.sqrt(((mid - f) ** 2).sum(-1)))
-        return best > AWAY
-    return far(0.5 * (p[:, :-1] + p[:, 1:])), far(0.5 * (p[:-1] + p[1:]))
-
-
 def across(runs, scene, fabric_name, sizes):
     """Each grid's field against the finest's, away from the fixed vertices: {n: (patch means,
     point samples)}, relative RMS differences.
@@ -151,7 +134,7 @@ def across(runs, scene, fabric_name, sizes):
     coarse = sizes[0]
     finest = sizes[-1]
     cloth, x = runs[(scene, fabric_name, coarse)]
-    keep_rows, keep_cols = far_edges(cloth, x)
+    keep_rows, keep_cols = on_grid(cloth, away_from_fixed(cloth, x, AWAY))
     fixed = x[np.array(cloth.fixed, dtype=bool)]
     keep = np.ones(cloth.n_verts, dtype=bool)
     for p in fixed:
@@ -161,7 +144,7 @@ def across(runs, scene, fabric_name, sizes):
     points = {}
     for n in sizes:
         c, xn = runs[(scene, fabric_name, n)]
-        along_rows, along_cols = restrict(edge_fields(c, xn), n, coarse)
+        along_rows, along_cols = restrict(on_grid(c, tension_strain(c, xn)), n, coarse)
         patches[n] = np.concatenate([along_rows[keep_rows], along_cols[keep_cols]])
         points[n] = sample(vertex_field(c, xn), n, coarse)[keep]
     every = np.ones(len(patches[finest]), dtype=bool)
