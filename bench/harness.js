@@ -42,9 +42,9 @@
   // A pull and a release: the scene runs `settle` frames; a hand takes vertex k where it is and
   // moves it by (dx, dy) over `pull` frames, holds it `hold` frames and lets go; then `after`
   // frames. Returns the energies (kinetic, elastic, gravitational) just before the release,
-  // the most the total rose above them after it, and per frame after it the speed 95% of the
-  // vertices stay under and the fastest, and how far the highest free vertex rose above the
-  // highest fixed one; with `tap`, the hand takes hold and lets go with no frame between.
+  // the free vertices' mass, the most the total rose above them after it, and per frame after
+  // it the speed 95% of the vertices stay under and the fastest, and how far the highest free
+  // vertex rose above the highest fixed one.
   B.pull = function (text, settle, k, dx, dy, pull, hold, after) {
     const cl = clothCore.load(text), r = M.run(cl), ops = r.ops;
     M.step(r, settle, 0);
@@ -54,6 +54,8 @@
     M.step(r, hold, 0);
     const held = [cl.pos[2 * k] - x0, cl.pos[2 * k + 1] - y0];
     const before = ops.energies();
+    let free = 0;
+    for (let i = 0; i < cl.n_verts; i++) if (!cl.fixed[i]) free += cl.mass[i];
     ops.release(k);
     let gain = -Infinity, p95 = 0, top = 0, rise = -Infinity, pins = -Infinity;
     for (let i = 0; i < cl.n_verts; i++) if (cl.fixed[i]) pins = Math.max(pins, cl.pos[2 * i + 1]);
@@ -72,7 +74,7 @@
       p95 = Math.max(p95, s[Math.floor(0.95 * (m - 1))]);
       top = Math.max(top, s[m - 1]);
     }
-    return { before: before, gain: gain, p95: p95, fastest: top, rise: rise, reached: held,
+    return { before: before, free: free, gain: gain, p95: p95, fastest: top, rise: rise, reached: held,
              finite: Array.from(cl.pos).every(Number.isFinite) };
   };
 

@@ -1,5 +1,6 @@
-"""The benchmark's own arithmetic (bench/front.py, bench/fabrics.py): the front, the targets,
-the errors against the exact statics, and the field of one grid sampled on another."""
+"""The benchmark's own arithmetic (bench/front.py, bench/fabrics.py, bench/releases.py): the
+front, the targets, the errors against the exact statics, the field of one grid sampled on
+another, and what a release is held to."""
 import json
 import math
 
@@ -7,6 +8,7 @@ import numpy as np
 
 from bench import fabrics as bfab
 from bench import front as bf
+from bench import releases as brel
 from cloth.api import load
 
 
@@ -92,3 +94,20 @@ def test_the_exact_pendulum_period_tends_to_the_small_swing_one():
     # 90 degrees: K(1/2) = 1.8540746773013719
     assert math.isclose(pendulum_period(1.0, math.pi / 2), 4 / math.sqrt(9.81) * 1.8540746773013719,
                         rel_tol=1e-12)
+
+
+def release_row(cols, rows, pull, p95, rise, gain=-0.1, stretch=1.0):
+    return {'cols': cols, 'rows': rows, 'pull': pull, 'p95': p95, 'rise': rise, 'gain': gain,
+            'scale': 1.0, 'finite': True, 'stretch': stretch, 'tap': None}
+
+
+def test_a_release_is_held_to_the_speed_limits_but_a_strip_to_its_own_stretch():
+    limit = brel.LIMITS[0.2]
+    assert brel.verdict(release_row(30, 30, 0.2, 0.9 * limit, -0.1)) == []
+    # a cloth over the limit or above its pins fails, whatever its stretch stored
+    assert len(brel.verdict(release_row(30, 30, 0.2, 1.1 * limit, 0.01, stretch=10.0))) == 2
+    # a strip springing back with its stretch passes, and fails on energy gained or a rise
+    # higher than its stretch could lift it (v^2 / 2g: 6 m/s lifts 1.83 m)
+    assert brel.verdict(release_row(30, 1, 0.2, 6.3, 0.05, stretch=6.0)) == []
+    assert len(brel.verdict(release_row(30, 1, 0.2, 6.3, 1.9, stretch=6.0))) == 1
+    assert len(brel.verdict(release_row(1, 30, 0.2, 6.3, 0.05, gain=0.5, stretch=6.0))) == 1
