@@ -101,6 +101,14 @@ def restart_at(cloth, k):
     cloth.vel_prev[i + 1] = vel[i + 1] - gy * h
 
 
+def next_order(cloth):
+    """The order of the next step: the solver's, but backward Euler (1) in place of BDF2 after
+    a solve left the cloth off balance (UNBALANCED)."""
+    if cloth.max_order == 2 and cloth.imbalance > UNBALANCED:
+        return 1
+    return cloth.max_order
+
+
 def predict(cloth):
     """The step's inertial target `pred` and `base`, its history moved on (prev = x, vel_prev =
     v), and the solvers' first guess in `pos`: where its velocity alone carries each vertex
@@ -115,9 +123,7 @@ def predict(cloth):
     the two guesses from step to step and never settles). A falling piece's guess has it: its
     springs at rest pull on nothing there, and the fall is exact (without it, sweeps slowed by
     its springs pulled a free 6x4 cloth down unevenly: 1.5 cm sideways in a second)."""
-    k2 = cloth.max_order
-    if k2 == 2 and cloth.imbalance > UNBALANCED:
-        k2 = 1
+    k2 = next_order(cloth)
     if k2 != cloth.order:
         order(cloth, k2)
     pos = cloth.pos

@@ -12,6 +12,7 @@ Computed when asked for: the page asks every frame, a headless run once at the e
 import math
 
 from cloth.host import f64, i32
+from cloth.energy import by_piece
 
 # The colours' automatic full scale (the page's Auto) is the value HIGH_SHARE of the drawn
 # edges are at or below, not the largest: where a clamp ends, or at a point pin, a continuum's
@@ -97,30 +98,15 @@ def measure(cloth):
 
 
 def energies(cloth):
-    """[kinetic, elastic, gravitational] energy now, in joules (gravity's is -m g . x; the
-    fixed vertices' parts are left out: nothing moves them but a hand)."""
-    pos = cloth.pos
-    vel = cloth.vel
-    kinetic = 0.0
-    gravity = 0.0
-    for k in range(cloth.n_verts):
-        if cloth.fixed[k] != 0:
-            continue
-        m = cloth.mass[k]
-        vx = vel[k + k]
-        vy = vel[k + k + 1]
-        kinetic += 0.5 * m * (vx * vx + vy * vy)
-        gravity -= m * (cloth.gravity_x * pos[k + k] + cloth.gravity_y * pos[k + k + 1])
-    elastic = 0.0
-    for e in range(cloth.n_edges):
-        a = cloth.edge_a[e]
-        b = cloth.edge_b[e]
-        dx = pos[b + b] - pos[a + a]
-        dy = pos[b + b + 1] - pos[a + a + 1]
-        x = math.sqrt(dx * dx + dy * dy) - cloth.rest[e]
-        if x > 0.0:
-            elastic += 0.5 * cloth.stiff[e] * x * x
-    return [kinetic, elastic, gravity]
+    """[kinetic, elastic, gravitational] energy now, in joules (energy.by_piece, summed)."""
+    by_piece(cloth)
+    e = cloth.piece_energy
+    out = [0.0, 0.0, 0.0]
+    for p in range(cloth.n_pieces):
+        out[0] += e[3 * p]
+        out[1] += e[3 * p + 1]
+        out[2] += e[3 * p + 2]
+    return out
 
 
 def nearest(cloth, x, y, radius):

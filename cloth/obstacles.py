@@ -49,6 +49,16 @@ def push_out(cloth):
             cloth.obstacle_row_box)
 
 
+def obstacles_still(cloth):
+    """Whether no obstacle moves in this step (after advance: where it was is where it is)."""
+    at = cloth.obstacle_at
+    was = cloth.obstacle_was
+    for i in range(cloth.n_obstacles * 2):
+        if at[i] != was[i]:
+            return False
+    return True
+
+
 def obstacles_arrived(cloth):
     """At a frame's end every obstacle is where it was sent: the next frame starts there."""
     for i in range(cloth.n_obstacles * 2):

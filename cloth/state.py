@@ -59,6 +59,12 @@ class Cloth:
         self.was_falling = i32(n)     # `falling` before a cut (step.broke)
         self.n_pieces = 0
         self.piece_sum = f64(3 * n)   # per piece: mass, and its mass-weighted offset (vbd)
+        self.piece_energy = f64(3 * n)  # per piece: kinetic, elastic, gravitational (energy.py)
+        self.energy_before = f64(n)   # per piece: its energy before a step (energy.take_stock)
+        self.stock = 0                # 1 when it was taken for this step
+        self.piece_motion = f64(3 * n)  # per piece nothing holds: mass, then its velocity
+        self.solved_pos = f64(2 * n)  # pos before the obstacles' push (energy.before_contact)
+        self.piece_touched = i32(n)   # per piece: 1 if the push moved it (energy.no_gain)
         self.mass = f64(n)
         self.inv_mass = f64(n)    # 1 / mass, 0 where fixed (obstacles and air read it)
         self.fixed = i32(n)

@@ -24,6 +24,7 @@ from cloth.solvers import REGISTRY, SEED_SOLVER
 from cloth.state import Cloth
 from cloth import topology
 from cloth import integrate
+from cloth import energy
 from cloth import measure
 from cloth import hands
 from cloth import obstacles
@@ -81,18 +82,28 @@ def configure(cloth, scene):
     cloth.mg_stale = True
     solver[0].prepare(cloth)
     cloth.frame_stages = []
-    if scene.drag > 0.0 and (scene.wind_x != 0.0 or scene.wind_y != 0.0):
+    windy = scene.drag > 0.0 and (scene.wind_x != 0.0 or scene.wind_y != 0.0)
+    if windy:
         cloth.frame_stages.append(air.feel_air)
     cloth.stages = [hands.aim_hands]
     if cloth.n_obstacles > 0:
         cloth.stages.append(obstacles.advance)
+    # A backward-Euler step of a cloth nothing drives raises no energy (energy.py): not with
+    # wind, which does work.
+    no_gain = solver[1] == integrate.predict and not windy
+    if no_gain:
+        cloth.stages.append(energy.take_stock)
     cloth.stages.append(solver[1])
     if solver[1] == integrate.predict:
         cloth.stages.append(hands.hold)
     cloth.stages.append(solver[2])
     if cloth.n_obstacles > 0:
+        if no_gain:
+            cloth.stages.append(energy.before_contact)
         cloth.stages.append(obstacles.push_out)
     cloth.stages.append(solver[3])
+    if no_gain:
+        cloth.stages.append(energy.no_gain)
     if scene.tear > 0.0:
         cloth.stages.append(tear)
     cloth.after_stages = [hands.hands_arrived]

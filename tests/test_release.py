@@ -229,12 +229,13 @@ def settle(cloth, most=600):
         frame(cloth)
 
 
-@pytest.mark.parametrize('name, n', [
-    ('curtain', 9),
-    pytest.param('towel', 5, marks=pytest.mark.xfail(
-        strict=True, reason='known limit (docs/physics.md): the part of a held cloth that a lift leaves '
-        'slack lags gravity (the sweeps hold a vertex near a slack spring still), so let go on '
-        'its way up it rises higher than its energy allows'))])
+# A lift at 3 m/s leaves the cloth below the hand slack and folding; let go, the unfinished
+# solves of the next steps (backward Euler, the cloth off balance) gained energy: 5-23% of what
+# it moved with on the curtain at 10x10 to 30x30 (9x9 not), 5-19% on the towel at 5x5 and at
+# 30x30 to 60x60 (10x10 to 24x24 not), until a piece whose such step raised its energy gave the
+# gain back from its motion (cloth/energy.py).
+@pytest.mark.parametrize('name, n', [('curtain', 9), ('curtain', 12), ('curtain', 24), ('towel', 5),
+                                     ('towel', 30), ('towel', 40), ('corners', 16)])
 def test_a_lift_let_go_on_its_way_up_adds_no_energy(name, n):
     cloth = load(still(name, n))
     step(cloth, 10)
