@@ -44,6 +44,7 @@ class Cloth:
         self.stages = []          # a step's stages, chosen by step.configure
         self.frame_stages = []    # a frame's, before its steps
         self.after_stages = []    # and after them
+        self.again_stages = []    # a step's from its solve to its finish (energy.no_gain)
         # motion
         self.pos = f64(2 * n)
         self.vel = f64(2 * n)

@@ -96,13 +96,16 @@ def configure(cloth, scene):
     cloth.stages.append(solver[1])
     if solver[1] == integrate.predict:
         cloth.stages.append(hands.hold)
-    cloth.stages.append(solver[2])
+    solving = [solver[2]]
     if cloth.n_obstacles > 0:
         if no_gain:
-            cloth.stages.append(energy.before_contact)
-        cloth.stages.append(obstacles.push_out)
-    cloth.stages.append(solver[3])
+            solving.append(energy.before_contact)
+        solving.append(obstacles.push_out)
+    solving.append(solver[3])
+    for i in range(len(solving)):
+        cloth.stages.append(solving[i])
     if no_gain:
+        cloth.again_stages = solving
         cloth.stages.append(energy.no_gain)
     if scene.tear > 0.0:
         cloth.stages.append(tear)
