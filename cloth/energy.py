@@ -15,9 +15,10 @@ it moved with within half a second (24x24; 19% on a 60x60 towel; the solve run t
 1000 sweeps, loses 20-46%). The steps the integrator takes by backward Euler are those after a
 solve left the cloth off balance (integrate.UNBALANCED), the ones in which that happens; on
 those, when no hand, wind or moving obstacle does work, a step that raised a piece's energy is
-solved once more, and a piece whose energy still rose gives the gain back from its motion: its vertices' velocities scaled by sqrt((KE - gain) / KE) (a piece
-nothing holds: their velocities relative to its centre of mass, so that its momentum, which the
-exact step keeps, stays). The positions the solve found stay. BDF2 steps (the cloth near balance) are left alone: their
+solved once more, and a piece whose energy still rose gives the gain back from its motion: its
+vertices' velocities scaled by sqrt((KE - gain) / KE) (a piece nothing holds: their velocities
+relative to its centre of mass, so that its momentum, which the exact step keeps, stays). The
+positions the solve found stay. BDF2 steps (the cloth near balance) are left alone: their
 energy is not monotone even when solved exactly (a swing's energy ripples within the period).
 """
 
