@@ -275,21 +275,28 @@ def test_a_chain_lifted_fast_and_let_go_keeps_moving_as_the_exact_steps_do(n):
     assert kinetic_after_release(None) >= 0.9 * kinetic_after_release(400)
 
 
-@pytest.mark.parametrize('n', [20, 30, 60])
-def test_a_chain_lifted_held_and_let_go_adds_no_energy(n):
-    # `python -m bench --releases`' lift: the end 0.2 m up over 30 frames, held 30, let go.
-    # The slack part of the chain lagged gravity in the sweeps while the hand held it up: let
-    # go, its energy rose 1e-3 J at 20x1 and 2e-4 J at 30x1 until the sweeps near a hand
-    # (cloth/vbd.py, NEAR_SWEEPS) solved the held part's steps through.
+def chain_pulled_and_held(n, dy):
+    """`python -m bench --releases`' pull on an n x 1 chain: settled 180 frames, its end moved dy
+    metres up over 30 frames and held 30; returns the cloth and the held vertex."""
     cloth = load(still('chain', n))
     step(cloth, 180)
     k = bottom_middle(cloth)
     x0, y0 = xy(cloth, k)
     grab(cloth, k, x0, y0)
     for f in range(1, 31):
-        move(cloth, k, x0, y0 + 0.2 * f / 30)
+        move(cloth, k, x0, y0 + dy * f / 30)
         frame(cloth)
     step(cloth, 30)
+    return cloth, k
+
+
+@pytest.mark.parametrize('n', [20, 30, 60])
+def test_a_chain_lifted_held_and_let_go_adds_no_energy(n):
+    # `python -m bench --releases`' lift: the end 0.2 m up over 30 frames, held 30, let go.
+    # The slack part of the chain lagged gravity in the sweeps while the hand held it up: let
+    # go, its energy rose 1e-3 J at 20x1 and 2e-4 J at 30x1 until the sweeps near a hand
+    # (cloth/vbd.py, NEAR_SWEEPS) solved the held part's steps through.
+    cloth, k = chain_pulled_and_held(n, 0.2)
     release(cloth, k)
     rise, moving = watch(cloth, 120)
     assert rise <= GAIN * moving
@@ -304,15 +311,7 @@ def test_a_strip_stretched_and_let_go_springs_back_as_an_elastic_strip(n, pull):
     # sqrt(2 E / m), all its stretch become motion). It does: not faster (energy from nowhere),
     # not slower (a release that took motion away). The wave crosses the 1.6 m strip in two
     # frames; the discrete strip's speeds were 0.96-1.06 of c e_rms at 20 to 200 columns.
-    cloth = load(still('chain', n))
-    step(cloth, 180)
-    k = bottom_middle(cloth)
-    x0, y0 = xy(cloth, k)
-    grab(cloth, k, x0, y0)
-    for f in range(1, 31):
-        move(cloth, k, x0, y0 - pull * f / 30)
-        frame(cloth)
-    step(cloth, 30)
+    cloth, k = chain_pulled_and_held(n, -pull)
     h = cloth.spacing
     strain2 = 0.0
     for e in range(cloth.n_struct):
