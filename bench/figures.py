@@ -12,7 +12,7 @@ import math
 
 from cloth.presets import PRESETS, preset_scene
 from cloth.reference import pendulum_period
-from cloth.solvers import SOLVERS
+from cloth.keys import SOLVERS
 from bench.page import page_of, HARNESS
 
 PENDULUM_FRAMES = 900

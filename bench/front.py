@@ -20,7 +20,7 @@ import numpy as np
 from cloth.api import load
 from cloth.presets import preset_scene
 from cloth.reference import statics, tension_strain, away_from_fixed, field_error
-from cloth.solvers import DEFAULT_SOLVER, SEED_SOLVER
+from cloth.keys import DEFAULT_SOLVER, SEED_SOLVER
 
 RUN_SECONDS = 10.0
 AWAY = 0.1          # m: the field is compared farther than this from every fixed vertex

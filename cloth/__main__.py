@@ -16,7 +16,7 @@ from cloth.api import run, load, start, frames_of, simulate, result_of
 from cloth.host import to_json
 from cloth.values import SceneError
 from cloth.keys import MAX_SCENE_BYTES, KEYS
-from cloth.solvers import SOLVERS
+from cloth.keys import SOLVERS
 from cloth.scene import too_large
 
 

@@ -8,7 +8,8 @@ from cloth.host import to_json, kind_of, is_finite, parse_json
 from cloth.keys import KEYS, OPS, MAX_FRAMES, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, \
     MAX_SCENE_BYTES, SCENE_FIELDS, MODEL
 from cloth.values import fail
-from cloth.solvers import SOLVERS, SOLVER_LABELS, DEFAULT_SOLVER, SEED_SOLVER, MEASURED
+from cloth.keys import SOLVERS, SOLVER_LABELS, DEFAULT_SOLVER, SEED_SOLVER
+from cloth.solvers import MEASURED
 from cloth.fabrics import FABRICS, DEFAULT_FABRIC
 from cloth.scene import parse_scene, too_large, unused_settings, legacy_note
 from cloth.presets import PRESETS, preset_scene, preset_view

@@ -26,6 +26,7 @@ import math
 
 from cloth.integrate import next_order
 from cloth.obstacles import obstacles_still
+from cloth.terms import spring_energy
 
 
 def by_piece(cloth):
@@ -57,11 +58,8 @@ def by_piece(cloth):
     for e in range(cloth.n_edges):
         a = edge_a[e]
         b = edge_b[e]
-        dx = pos[b + b] - pos[a + a]
-        dy = pos[b + b + 1] - pos[a + a + 1]
-        x = math.sqrt(dx * dx + dy * dy) - rest[e]
-        if x > 0.0:
-            out[3 * piece[a] + 1] += 0.5 * stiff[e] * x * x
+        out[3 * piece[a] + 1] += spring_energy(stiff[e], rest[e], pos[b + b] - pos[a + a],
+                                               pos[b + b + 1] - pos[a + a + 1])
 
 
 def take_stock(cloth):

@@ -24,6 +24,7 @@ import math
 from cloth.values import SceneError
 from cloth.topology import walk_grip, label_pieces
 from cloth.integrate import rest_at, restart_at
+from cloth.terms import inertia_weight, hand_energy, spring_energy
 
 # A person's pull: enough to lift and carry every preset's cloth in the heaviest fabric the
 # page offers (the Large cloth, 2 x 2 m of denim, weighs 16 N) and a little more, not so much
@@ -285,7 +286,6 @@ def patch_energy(cloth, k, t):
     pull, their springs), each gripped vertex v at pos + t way_v (guess_grip), the rest of the
     cloth where it is; a spring between two of them counted once."""
     pos = cloth.pos
-    w = cloth.w_scale * cloth.grip_w
     mx = (cloth.target[k + k] - cloth.hand_from[k + k]) * cloth.h / cloth.dt
     my = (cloth.target[k + k + 1] - cloth.hand_from[k + k + 1]) * cloth.h / cloth.dt
     total = 0.0
@@ -298,10 +298,10 @@ def patch_energy(cloth, k, t):
         y = pos[i + 1] + t * (cloth.prev[i + 1] + my - pos[i + 1])
         ex = x - cloth.pred[i]
         ey = y - cloth.pred[i + 1]
-        total += 0.5 * w * cloth.mass[v] * (ex * ex + ey * ey)
+        total += 0.5 * inertia_weight(cloth, v) * (ex * ex + ey * ey)
         dx = x - cloth.aim[i]
         dy = y - cloth.aim[i + 1]
-        total += pull_energy(cloth.grip_f[v], cloth.grip_f[v] / cloth.grip_k[v], dx * dx + dy * dy)
+        total += hand_energy(cloth.grip_f[v], cloth.grip_f[v] / cloth.grip_k[v], dx * dx + dy * dy)
         for q in range(cloth.adj_start[v], cloth.adj_start[v + 1]):
             o = cloth.adj_other[q]
             j = o + o
@@ -312,18 +312,8 @@ def patch_energy(cloth, k, t):
                 share = 0.5
                 ox += t * (cloth.prev[j] + mx - ox)
                 oy += t * (cloth.prev[j + 1] + my - oy)
-            sx = ox - x
-            sy = oy - y
-            d = math.sqrt(sx * sx + sy * sy) - cloth.adj_rest[q]
-            if d > 0.0:
-                total += share * 0.5 * cloth.adj_k[q] * d * d
+            total += share * spring_energy(cloth.adj_k[q], cloth.adj_rest[q], ox - x, oy - y)
     return total
-
-
-def pull_energy(f, r, d2):
-    """A hand's spring's energy at a squared distance d2 from its aim: f r (sqrt(1 + d2 / r^2) - 1),
-    a pull of f r^-1 d near the aim that levels off at f."""
-    return f * r * (math.sqrt(1.0 + d2 / (r * r)) - 1.0)
 
 
 def guess_grip(cloth, k):

@@ -16,10 +16,6 @@ v = (x' - x) / h + a h / 2.
 
 import math
 
-NAME = 'jakobsen'
-LABEL = 'Jakobsen (the seed\'s method)'
-# substeps, iterations (sweeps a step), corrections (none)
-BUDGET = [1, 20, 0]
 # Its own Verlet, not cloth/integrate.py's steps.
 ORDER = 0
 # Its rigid edges have no forces to balance (cloth.imbalance stays 0).

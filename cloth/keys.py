@@ -1,9 +1,26 @@
 """Every scene key, declared once: the parser checks it by this, its messages word its range,
-the page's fields, captions and compare editor take their label, unit and range from it, and
-the solvers' own defaults come from their registration (cloth/solvers.py)."""
+the page's fields, captions and compare editor take their label, unit and range from it.
+The settings know nothing of the physics: the solvers' code registers against the names here
+(cloth/solvers.py), not the other way round."""
 
 from cloth.fabrics import fabric, DEFAULT_FABRIC
-from cloth.solvers import SOLVERS, SOLVER_LABELS, SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
+
+# The solvers a scene may name, with their label and their own budget: substeps, iterations
+# (sweeps a step) and coarse-grid corrections a step (only the default has any). Each one's
+# code is a line of cloth/solvers.py's REGISTRY, in this order.
+SOLVER_TABLE = [
+    # The seed's own setting: 20 relaxations a frame.
+    ['jakobsen', 'Jakobsen (the seed\'s method)', [1, 20, 0]],
+    # Five sweeps and one correction a step (the speed-against-error front: docs/benchmark.md).
+    ['vbd', 'Vertex descent + multigrid', [1, 5, 1]],
+    # XPBD's own way: many small steps of one sweep each.
+    ['xpbd', 'XPBD (small steps)', [16, 1, 0]],
+]
+SOLVERS = [s[0] for s in SOLVER_TABLE]
+SOLVER_LABELS = [s[1] for s in SOLVER_TABLE]
+SOLVER_BUDGETS = [s[2] for s in SOLVER_TABLE]
+DEFAULT_SOLVER = 'vbd'
+SEED_SOLVER = 'jakobsen'
 
 # Limits. A grid larger than MAX_VERTICES would need hundreds of MB of state (and would not
 # run in real time anyway); the other bounds keep every parameter physically meaningful.

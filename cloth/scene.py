@@ -15,7 +15,7 @@ from cloth.host import too_deep, parse_json, kind_of, has_key, key_list, copy_ob
 from cloth.keys import MAX_VERTICES, MAX_SCENE_BYTES, MAX_DEPTH, MAX_PANELS, MAX_OBSTACLES, \
     OBSTACLE_FAR, OBSTACLE_SIZE, SCENE_KEYS, SETTABLE, NOT_SETTINGS, COMPARE_KEYS, MODEL, \
     LEGACY_KEYS, spec, solver_index
-from cloth.solvers import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
+from cloth.keys import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
 from cloth.values import SceneError, fail, shown, number, integer, boolean, known
 from cloth.actions import parse_actions
 

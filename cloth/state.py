@@ -107,6 +107,8 @@ class Cloth:
         self.mg_grip = i32(n)     # made for (hands.refix: a change of them makes them stale)
         self.near = i32(0)        # the vertices near a hand, and their marks (vbd.near_hands)
         self.near_mark = i32(0)
+        self.term = f64(8)        # one term's force and block (cloth/terms.py)
+        self.acc = f64(8)         # a vertex's, summed over its terms
         # measures: per structural edge the value the colours show, per vertex the seed's
         # stress Q, and summaries
         self.load2 = 0.0          # sum over free vertices of (m g)^2: the imbalance's scale

@@ -19,8 +19,8 @@ a fresh closure on every call, and the hot path must not allocate.
 from cloth.host import f64
 from cloth.fabrics import HEM_LAYERS, HEM_WIDTH
 from cloth.values import SceneError
-from cloth.keys import solver_index
-from cloth.solvers import REGISTRY, SEED_SOLVER
+from cloth.keys import solver_index, SEED_SOLVER
+from cloth.solvers import REGISTRY
 from cloth.state import Cloth
 from cloth import topology
 from cloth import integrate
@@ -77,10 +77,10 @@ def configure(cloth, scene):
     cloth.seed = scene.solver == SEED_SOLVER
     cloth.tear_limit[0] = (1.0 + scene.tear) * (1.0 + scene.tear)
     solver = REGISTRY[cloth.solver]
-    cloth.max_order = solver[0].ORDER
+    cloth.max_order = solver[1].ORDER
     integrate.configure(cloth, scene)
     cloth.mg_stale = True
-    solver[0].prepare(cloth)
+    solver[1].prepare(cloth)
     cloth.frame_stages = []
     windy = scene.drag > 0.0 and (scene.wind_x != 0.0 or scene.wind_y != 0.0)
     if windy:
@@ -90,18 +90,18 @@ def configure(cloth, scene):
         cloth.stages.append(obstacles.advance)
     # A backward-Euler step of a cloth nothing drives raises no energy (energy.py): not with
     # wind, which does work.
-    no_gain = solver[1] == integrate.predict and not windy
+    no_gain = solver[2] == integrate.predict and not windy
     if no_gain:
         cloth.stages.append(energy.take_stock)
-    cloth.stages.append(solver[1])
-    if solver[1] == integrate.predict:
+    cloth.stages.append(solver[2])
+    if solver[2] == integrate.predict:
         cloth.stages.append(hands.hold)
-    solving = [solver[2]]
+    solving = [solver[3]]
     if cloth.n_obstacles > 0:
         if no_gain:
             solving.append(energy.before_contact)
         solving.append(obstacles.push_out)
-    solving.append(solver[3])
+    solving.append(solver[4])
     for i in range(len(solving)):
         cloth.stages.append(solving[i])
     if no_gain:

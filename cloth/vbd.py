@@ -33,11 +33,8 @@ from cloth.host import f64, i32
 from cloth.multigrid import hierarchy
 from cloth.coarse import correct
 from cloth.contact import keep_out, unopposed
+from cloth.terms import vertex
 
-NAME = 'vbd'
-LABEL = 'Vertex descent + multigrid'
-# substeps, iterations (sweeps a step) and coarse corrections a step
-BUDGET = [1, 5, 1]
 # Its steps are BDF2 (cloth/integrate.py), backward Euler after one left off balance.
 ORDER = 2
 # Its last sweep measures cloth.imbalance (sweep).
@@ -251,20 +248,13 @@ def sweep(cloth, forward, last):
 
 def relax(cloth, forward, last, verts, n):
     """A sweep over verts[:n] (every vertex, in index order, if verts is None), forward or
-    backward."""
+    backward: each vertex in turn one Newton step on G with the others held,
+    x_i += H_i^-1 f_i (terms.vertex gives f_i and H_i)."""
     pos = cloth.pos
-    pred = cloth.pred
     fixed = cloth.fixed
-    mass = cloth.mass
-    start = cloth.adj_start
-    other = cloth.adj_other
-    arest = cloth.adj_rest
-    ak = cloth.adj_k
     grip = cloth.grip
     aim = cloth.aim
-    grip_k = cloth.grip_k
-    grip_f = cloth.grip_f
-    ws = cloth.w_scale
+    acc = cloth.acc
     contact = cloth.n_obstacles > 0
     sqrt = math.sqrt
     f2 = 0.0
@@ -275,78 +265,17 @@ def relax(cloth, forward, last, verts, n):
         if fixed[i] != 0:
             continue
         ii = i + i
-        w = mass[i] * ws
-        if grip[i] >= 0:
-            w *= cloth.grip_w
         # A second Newton step only for a gripped vertex whose first stopped short (below).
         for again in range(2):
             xi = pos[ii]
             yi = pos[ii + 1]
-            fx = w * (pred[ii] - xi)
-            fy = w * (pred[ii + 1] - yi)
-            hxx = w
-            hxy = 0.0
-            hyy = w
-            for q in range(start[i], start[i + 1]):
-                j = other[q] + other[q]
-                dx = pos[j] - xi
-                dy = pos[j + 1] - yi
-                L2 = dx * dx + dy * dy
-                if L2 < 1e-30:
-                    continue
-                L = sqrt(L2)
-                k = ak[q]
-                nx = dx / L
-                ny = dy / L
-                r0 = arest[q]
-                if L > r0:
-                    s = k * (L - r0)
-                    fx += s * nx
-                    fy += s * ny
-                    t1 = k - k * r0 / L
-                    t2 = k * r0 / L
-                    hxx += t1 + t2 * nx * nx
-                    hxy += t2 * nx * ny
-                    hyy += t1 + t2 * ny * ny
-                else:
-                    hxx += k * nx * nx
-                    hxy += k * nx * ny
-                    hyy += k * ny * ny
-            pulled = False
-            reach = 0.0
-            if grip[i] >= 0:
-                # A hand: its pull k (aim - x) / s, s = sqrt(1 + (d / r)^2), r = f / k, grows as
-                # a spring's near the aim and levels off at f (cloth/hands.py). Its curvature,
-                # k / s^3 along the pull and k / s across it, is small when it pulls hard from
-                # afar: a far hand drags its vertex as hard as its force can (with k along the
-                # pull a hand moved its vertex 1 mm a sweep, and could not catch a swinging
-                # cloth); a step that would carry the vertex within r of the aim, where the
-                # curvature climbs to k, stops at r (below), and a second step from there takes
-                # k, the most the curvature reaches anywhere (a majoriser: it cannot overshoot).
-                # Without it a vertex stopped a hair beyond r took the soft curvature again and
-                # the stop kept it there: while the hand moved, its vertex trailed by r, 1.4 px
-                # of the towel at the page's scale.
-                dx = aim[ii] - xi
-                dy = aim[ii + 1] - yi
-                kh = grip_k[i]
-                reach = grip_f[i] / kh
-                d2 = dx * dx + dy * dy
-                sh = sqrt(1.0 + d2 / (reach * reach))
-                s = kh / sh
-                fx += s * dx
-                fy += s * dy
-                if d2 > reach * reach and again == 0:
-                    d = sqrt(d2)
-                    nx = dx / d
-                    ny = dy / d
-                    along = s / (sh * sh)
-                    hxx += s + (along - s) * nx * nx
-                    hxy += (along - s) * nx * ny
-                    hyy += s + (along - s) * ny * ny
-                    pulled = True
-                else:
-                    hxx += kh
-                    hyy += kh
+            vertex(cloth, i, again == 0, acc)
+            fx = acc[0]
+            fy = acc[1]
+            hxx = acc[2]
+            hxy = acc[3]
+            hyy = acc[4]
+            pulled = acc[5] != 0.0
             if last and again == 0 and grip[i] < 0:
                 f2 += unopposed(cloth, i, fx, fy) if contact else fx * fx + fy * fy
             det = hxx * hyy - hxy * hxy
@@ -354,10 +283,14 @@ def relax(cloth, forward, last, verts, n):
             my = (hxx * fy - hxy * fx) / det
             stopped = False
             if pulled:
-                # No farther along the pull than to within r of the aim: the pull's curvature
-                # there is k, not the k / s^3 the step was taken with (a light vertex in a
-                # hand's full pull would otherwise be thrown far past the hand: 20 N on a gram
-                # is 2 km/s^2).
+                # A hand far from its vertex took the pull's soft curvature (terms.hand): no
+                # farther along the pull than to within r of the aim, where the curvature is
+                # k, not the k / s^3 the step was taken with (a light vertex in a hand's full
+                # pull would otherwise be thrown far past the hand: 20 N on a gram is
+                # 2 km/s^2); a second step from there takes k, which cannot overshoot. (A
+                # vertex stopped a hair beyond r that took the soft curvature again stayed
+                # there: while the hand moved, its vertex trailed by r, 1.4 px of the towel.)
+                reach = cloth.grip_f[i] / cloth.grip_k[i]
                 dx = aim[ii] - xi
                 dy = aim[ii + 1] - yi
                 d = sqrt(dx * dx + dy * dy)

@@ -12,10 +12,6 @@ import math
 
 from cloth.host import f64
 
-NAME = 'xpbd'
-LABEL = 'XPBD (small steps)'
-# substeps, iterations (sweeps a step), corrections (none)
-BUDGET = [16, 1, 0]
 # Its steps are position Verlet's, as XPBD's are (cloth/integrate.py, order 0): with one sweep
 # a substep its solve is never finished, and BDF2, which damps what a step leaves unfinished
 # less, let a stiff chain from rest reach hundreds of m/s.

@@ -22,7 +22,7 @@ from pathlib import Path
 from cloth.fabrics import FABRICS
 from cloth.keys import MODEL
 from cloth.presets import PRESETS, preset_scene
-from cloth.solvers import SOLVERS
+from cloth.keys import SOLVERS
 
 from hard_cases import HARD, BOUNDED
 

@@ -11,7 +11,7 @@ import pytest
 
 from cloth.api import run
 from cloth.keys import MODEL, solver_index
-from cloth.solvers import SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
+from cloth.keys import SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
 from cloth.values import SceneError
 
 ROOT = Path(__file__).resolve().parent.parent

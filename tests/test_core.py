@@ -11,7 +11,7 @@ from cloth.fabrics import HEM_LAYERS, HEM_WIDTH
 from cloth.hands import HAND_FORCE, HAND_STIFFNESS, grab, release, pin, unpin, toggle_pin
 from cloth.keys import spec
 from cloth.measure import measure, energies, nearest
-from cloth.solvers import SOLVERS, DEFAULT_SOLVER, SEED_SOLVER
+from cloth.keys import SOLVERS, DEFAULT_SOLVER, SEED_SOLVER
 from cloth.topology import count_edges
 
 DEFAULT_STRETCH = spec('stretch').fallback      # N/m: the default fabric's

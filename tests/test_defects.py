@@ -19,7 +19,7 @@ from cloth.hands import grab, pin
 from cloth.host import too_deep
 from cloth.keys import MAX_DEPTH, MODEL, spec, solver_index
 from cloth.scene import parse_scene
-from cloth.solvers import SOLVERS, DEFAULT_SOLVER
+from cloth.keys import SOLVERS, DEFAULT_SOLVER
 from cloth.step import frame
 from cloth.values import SceneError
 

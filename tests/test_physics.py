@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from cloth.reference import pendulum_period, statics, tension_strain
-from cloth.solvers import SOLVERS
+from cloth.keys import SOLVERS
 from helpers import scene, curtain, load, step, xy, all_finite, frame, unpin, pin, grab, \
     release, move
 

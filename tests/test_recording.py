@@ -12,7 +12,7 @@ import pytest
 from cloth.api import load, run, set_settings, simulate
 from cloth.hands import grab, move, release
 from cloth.keys import MODEL, spec, solver_index
-from cloth.solvers import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
+from cloth.keys import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
 from cloth.step import frame
 from cloth.values import SceneError
 

@@ -14,7 +14,7 @@ from cloth.keys import KEYS, SCENE_KEYS, SETTABLE, COMPARE_KEYS, MODEL, LEGACY_K
     solver_index
 from cloth.scene import parse_scene, legacy_note
 from cloth.topology import along_border
-from cloth.solvers import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
+from cloth.keys import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
 from cloth.values import SceneError
 
 BASE = {'model': MODEL, 'cols': 4, 'rows': 3, 'spacing': 0.1, 'pins': [0, 3]}

@@ -9,7 +9,7 @@ import pytest
 
 from cloth.api import run
 from cloth.keys import MAX_ACTIONS, MODEL
-from cloth.solvers import DEFAULT_SOLVER, SEED_SOLVER
+from cloth.keys import DEFAULT_SOLVER, SEED_SOLVER
 from cloth.values import SceneError
 from cloth import session as ses
 

@@ -14,7 +14,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from browser_helpers import ARGS, DIST, ROOT, SYSTEM_CHROMIUM, page_url  # noqa: E402
 sys.path.insert(0, str(ROOT))
-from cloth.solvers import SOLVERS  # noqa: E402
+from cloth.keys import SOLVERS  # noqa: E402
 
 
 def main():

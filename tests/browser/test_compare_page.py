@@ -12,7 +12,7 @@ from browser_helpers import ROOT, load_paused, wait_until
 from cloth.api import run
 from cloth.keys import MODEL, spec
 from cloth.presets import preset_scene
-from cloth.solvers import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
+from cloth.keys import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
 
 
 def budget(name):

@@ -17,7 +17,7 @@ from cloth.api import run
 from cloth.fabrics import FABRICS
 from cloth.keys import MODEL
 from cloth.scene import SceneError
-from cloth.solvers import SOLVERS, DEFAULT_SOLVER
+from cloth.keys import SOLVERS, DEFAULT_SOLVER
 
 from catalogue import CATALOGUE
 from conftest import ROOT

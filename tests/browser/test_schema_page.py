@@ -10,7 +10,7 @@ from browser_helpers import near  # noqa: F401  (the helpers' import sets the pa
 
 from cloth.keys import KEYS, OPS, MAX_ACTIONS, MAX_PANELS, MAX_VERTICES, COMPARE_KEYS, MODEL, \
     SCENE_FIELDS
-from cloth.solvers import SOLVERS, SOLVER_BUDGETS, SOLVER_LABELS, DEFAULT_SOLVER
+from cloth.keys import SOLVERS, SOLVER_BUDGETS, SOLVER_LABELS, DEFAULT_SOLVER
 from cloth.fabrics import FABRICS, DEFAULT_FABRIC
 from cloth.presets import PRESETS
 from cloth.topology import count_edges

@@ -6,7 +6,7 @@ import pytest
 from playwright.sync_api import Error as PlaywrightError
 
 from cloth.keys import spec
-from cloth.solvers import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER
+from cloth.keys import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER
 
 
 def set_input(pg, selector, value):
