@@ -8,6 +8,7 @@ import math
 
 from cloth.multigrid import galerkin, restrict, prolong, pcg, factor_dense
 from cloth.terms import assemble, energy_along
+from cloth.ccd import move_clear
 
 # The coarse operators are reused for this many steps: they are the Hessian where the cloth
 # was, and a rebuild costs about six sweeps (measured at 60x60); a cloth that moved more than a
@@ -100,5 +101,11 @@ def correct(cloth):
     if not (ga < g0):
         return
     pos = cloth.pos
-    for t in range(2 * cloth.n_verts):
-        pos[t] += alpha * d[t]
+    if cloth.n_obstacles == 0:
+        for t in range(2 * cloth.n_verts):
+            pos[t] += alpha * d[t]
+        return
+    # Near an obstacle each vertex goes only as far as its edges sweep none (contact.py).
+    for k in range(cloth.n_verts):
+        if cloth.fixed[k] == 0:
+            move_clear(cloth, k, pos[k + k] + alpha * d[k + k], pos[k + k + 1] + alpha * d[k + k + 1])

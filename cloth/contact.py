@@ -1,450 +1,458 @@
-"""Contact with the obstacles: the kernels (cloth/obstacles.py runs them as stages).
+"""Contact with the obstacles, inside the step's energy: a barrier that keeps every edge of the
+cloth out of every obstacle and friction along them, terms of G (cloth/terms.py) with their
+force and 2x2 block; and the rule every solver moves the cloth by while an obstacle is near it:
+a vertex goes only as far as its edges sweep no obstacle (continuous collision: each edge of
+the vertex sweeps the triangle between its other end and the vertex's path, cloth/geometry.py),
+so no edge of the cloth is ever inside an obstacle, whatever a hand, a flick or a drag does.
 
-keep_out is a constraint inside the solve (cloth/vbd.py's sweeps); collide and shield_edges
-run after it, swept over the step, so that nothing tunnels whatever the solver did.
+The barrier (after IPC: Li et al., "Incremental Potential Contact", SIGGRAPH 2020; a rational
+function in place of its logarithm, whose last bits differ between the runtimes): an edge, or
+a vertex left with no edge, at a distance d from an obstacle adds
+    b(d) = kappa (g - d)^3 / (d g)      for 0 < d < g = CONTACT_GAP, 0 beyond, infinite at 0,
+twice differentiable at g, convex and unbounded as d -> 0: no finite force brings the cloth to
+an obstacle, so a hand (20 N) cannot pull it through one. Its pairs are IPC's: each vertex
+against each obstacle, and each edge against each obstacle's point features (a circle's centre,
+its radius away; a box's corners), whose distances are continuously differentiable where they
+are positive (taking an edge's nearest point to a box's flat side instead, a strip lying on it
+had its weight on one end of each edge and then the other, and never balanced). An edge's
+gradient at its ends is b'(d) (1 - s) u and b'(d) s u (s: its nearest point's place along it,
+u: the direction from the feature to it), its block the Gauss-Newton b''(d) (1 - s)^2 u u^T
+(the distance's own curvature, of the wrong sign for a descent, left out). kappa: the
+barrier's curvature halfway in, b''(g / 2) = 14 kappa / g, is the fabric's stretch stiffness,
+so that a vertex's Newton step against an obstacle is conditioned as against a spring of the
+fabric; the cloth's weight rests most of the way out (a strip over a peg 5 times thinner than
+its spacing, its weight on two edges, 0.3 mm from it; with kappa the weight of an edge's ends,
+0.02 mm, and the sweeps left its balance 160 weights off).
+
+Friction (IPC's lagged form): a vertex the barrier pushed with a force lambda along n where
+the step began resists sliding along the tangent t, relative to the obstacle, by
+    D(x) = mu lambda f0(|t . (x - x_n - o)|)    (x_n where it began, o the obstacle's move)
+f0 being |.| rounded within eps = FRICTION_SLIP h (f0(y) = -y^3 / (3 eps^2) + y^2 / eps + eps / 3
+there): static within eps, a tangential spring of stiffness 2 mu lambda / eps about where the
+step began, and beyond it a force of mu lambda against the slide. Convex; its block is the
+secant mu lambda f0'(y) / y t t^T, a majoriser of its curvature.
 """
 
-import math
+from math import sqrt
 
-# Below this squared length an edge has no direction to push along.
-TINY2 = 1e-30
-# A vertex this close to an obstacle's surface (m) rests on it: keep_out puts it on the
-# surface to rounding, so a millimetre's thousandth is far above rounding and far below a step.
-TOUCH = 1e-6
+from cloth.host import f64, i32
+from cloth.geometry import point, corner, corners
+from cloth.multigrid import DIAG
+from cloth.ccd import CONTACT_GAP, meets, ring_near, zone_size, zone_vertex
+from cloth import ccd
+
+# Friction's creep (m/s): within this speed of the obstacle a contact holds as static friction.
+FRICTION_SLIP = 1e-3
+# A pin this close to an obstacle is fastened to it: it moves with the obstacle (a towel's
+# clamp on its peg). Twice the barrier's reach.
+FASTEN = 2.0 * CONTACT_GAP
+# G where an edge would be at or inside an obstacle.
+BLOCKED = 1e300
 
 
-def keep_out(cloth, i):
-    """Vertex i, if inside an obstacle where it now is, onto its surface the nearest way: the
-    contact as a constraint of the solve (vbd.sweep calls it after each vertex's step, so the
-    fabric comes to rest against an obstacle instead of being pushed out after every step)."""
-    ii = i + i
-    x = cloth.pos[ii]
-    y = cloth.pos[ii + 1]
+def prepare(cloth):
+    """The contact's arrays (once per cloth: an obstacle's scene has them all its life)."""
+    n = cloth.n_verts
+    if cloth.n_obstacles == 0 or len(cloth.guess) == 2 * n:
+        return
+    cloth.guess = f64(2 * n)        # the solver's first guess, while the start is made clear
+    cloth.start_pos = f64(2 * n)    # where the solve started (accept)
+    cloth.carry_from = f64(2 * n)   # where an obstacle's push started (obstacles.carry)
+    cloth.carried = f64(n)          # how much of an obstacle's move a vertex goes with
+    cloth.fric_w = f64(n)           # friction: mu lambda, the tangent, the obstacle
+    cloth.fric_t = f64(2 * n)
+    cloth.fric_o = i32(n)
+    cloth.fastened = i32(n)         # a pin's obstacle + 1 (0: none)
+    cloth.near_piece = i32(n)       # per piece: 1 if an obstacle may be near it (advance)
+    cloth.pressed = i32(n)          # 1: the barrier pushes it and no spring pulls it
+    cloth.bar = f64(4)
+    cloth.sum = f64(4)
+    ccd.prepare(cloth)
+
+
+def barrier(d, kappa, b):
+    """b[0..2] = b(d), b'(d), b''(d) for 0 < d < CONTACT_GAP (the module's comment)."""
+    g = CONTACT_GAP
+    u = g - d
+    b[0] = kappa * u * u * u / (d * g)
+    b[1] = -kappa * u * u * (2.0 * d + g) / (d * d * g)
+    b[2] = kappa / g * (6.0 * u / d + 2.0 * u * u * (2.0 * d + g) / (d * d * d))
+
+
+def friction(y, eps, b):
+    """b[0..2] = f0(y), f0'(y), f0'(y) / y for y >= 0 (the module's comment)."""
+    if y >= eps:
+        b[0] = y
+        b[1] = 1.0
+        b[2] = 1.0 / y
+        return
+    b[0] = -y * y * y / (3.0 * eps * eps) + y * y / eps + eps / 3.0
+    b[1] = -y * y / (eps * eps) + 2.0 * y / eps
+    b[2] = -y / (eps * eps) + 2.0 / eps
+
+
+def point_terms(cloth, i, x, y, only, acc):
+    """acc[0..4] += vertex i's own barrier at (x, y) against every obstacle near it (obstacle
+    `only` alone, if it is not -1). A vertex that began the step inside an
+    obstacle is pushed out instead (push_out)."""
+    if cloth.inside[i] != 0:
+        push_out(cloth, i, x, y, acc)
+        return
+    g = cloth.geo
+    b = cloth.bar
     at = cloth.obstacle_at
     half = cloth.obstacle_half
-    for j in range(cloth.n_obstacles):
-        jj = j + j
-        dx = x - at[jj]
-        dy = y - at[jj + 1]
-        hx = half[jj]
-        hy = half[jj + 1]
-        if cloth.obstacle_shape[j] == 0:
-            d2 = dx * dx + dy * dy
-            if d2 < hx * hx and d2 > 0.0:
-                s = hx / math.sqrt(d2)
-                x = at[jj] + dx * s
-                y = at[jj + 1] + dy * s
-        elif dx > -hx and dx < hx and dy > -hy and dy < hy:
-            gx = hx - abs(dx)
-            gy = hy - abs(dy)
-            if gx < gy:
-                x = at[jj] + (hx if dx >= 0.0 else -hx)
-            else:
-                y = at[jj + 1] + (hy if dy >= 0.0 else -hy)
-    cloth.pos[ii] = x
-    cloth.pos[ii + 1] = y
+    kappa = cloth.kappa
+    for o in range(cloth.n_obstacles):
+        if (only >= 0 and o != only) or not meets(cloth, o, x, x, y, y):
+            continue
+        oo = o + o
+        point(cloth.obstacle_shape[o], at[oo], at[oo + 1], half[oo], half[oo + 1], x, y, g)
+        d = g[0]
+        if d >= CONTACT_GAP or d <= 0.0:
+            continue
+        barrier(d, kappa, b)
+        add_force(acc, -b[1], b[2], g[2], g[3])
 
 
-def unopposed(cloth, i, fx, fy):
-    """The squared force (fx, fy) on vertex i that the obstacles it rests on do not oppose: the
-    part pushing into an obstacle's surface is met by the contact's reaction, and up to
-    friction times that push, the part along the surface by its friction. What the solve's
-    imbalance counts at a vertex in contact (a cloth lying still on a box is balanced)."""
-    ii = i + i
-    x = cloth.pos[ii]
-    y = cloth.pos[ii + 1]
+def edge_terms(cloth, i, xi, yi, j, xj, yj, only, acc):
+    """acc[0..4] += the barrier at vertex i, at (xi, yi), of its edge to vertex j at (xj, yj)
+    against the point features (geometry.corner) of every obstacle near it (obstacle `only`
+    alone, if it is not -1)."""
+    g = cloth.geo
+    b = cloth.bar
     at = cloth.obstacle_at
     half = cloth.obstacle_half
-    for j in range(cloth.n_obstacles):
-        jj = j + j
-        dx = x - at[jj]
-        dy = y - at[jj + 1]
-        hx = half[jj]
-        hy = half[jj + 1]
-        nx = 0.0
-        ny = 0.0
-        if cloth.obstacle_shape[j] == 0:
-            d2 = dx * dx + dy * dy
-            if d2 > 0.0 and d2 < (hx + TOUCH) * (hx + TOUCH):
-                d = math.sqrt(d2)
-                nx = dx / d
-                ny = dy / d
-        elif dx > -hx - TOUCH and dx < hx + TOUCH and dy > -hy - TOUCH and dy < hy + TOUCH:
-            if hx - abs(dx) < hy - abs(dy):
-                nx = 1.0 if dx >= 0.0 else -1.0
-            else:
-                ny = 1.0 if dy >= 0.0 else -1.0
-        push = fx * nx + fy * ny
-        if push < 0.0:
-            fx -= push * nx
-            fy -= push * ny
-            along = math.sqrt(fx * fx + fy * fy)
-            grip = -push * cloth.obstacle_friction[j]
-            if along <= grip:
-                return 0.0
-            fx *= 1.0 - grip / along
-            fy *= 1.0 - grip / along
-    return fx * fx + fy * fy
-
-
-def collide(pos, prev, inv_mass, cols, rows, count, shape, half, was, now, friction, bounds, row_box):
-    """Every free vertex out of every obstacle (sim.OBSTACLES), swept: in the obstacle's own
-    frame the vertex went from prev - was to pos - now over the step (the step's start, `prev`
-    after predict, and its end; `was` and `now`: each obstacle's centre then, 2 per obstacle).
-    A vertex whose path enters the shape is put where it entered, then slides on along the
-    surface by what was left of its step's tangential part times (1 - friction): so a fast
-    cloth or a fast obstacle (a box moved 1 m in one frame) never tunnels, and a moving one
-    carries what it pushes. A vertex that starts the step inside (a scene that put it there)
-    goes out the nearest way. Shapes: 0 a circle (half[2j]: its radius), 1 an axis-aligned
-    box (half width, half height).
-
-    By rows of the grid: a row's paths' box is found in one pass over it, and only an obstacle
-    whose swept box (bounds: 4 per obstacle, filled here) meets it looks at the row's vertices
-    one by one (a vertex-by-obstacle test for every vertex cost 17% of a 120x120 frame with
-    four obstacles far away, measured by `python -m bench --world`). Each vertex still meets
-    the obstacles in their order, each where the one before put it. row_box (4 per row) keeps
-    each row's box, grown by the swept box of every obstacle that met it (where it may have
-    put a vertex), for shield_edges."""
-    sqrt = math.sqrt
-    for j in range(count):
-        jj = j + j
-        b = j * 4
-        bounds[b] = min(was[jj], now[jj]) - half[jj]
-        bounds[b + 1] = max(was[jj], now[jj]) + half[jj]
-        bounds[b + 2] = min(was[jj + 1], now[jj + 1]) - half[jj + 1]
-        bounds[b + 3] = max(was[jj + 1], now[jj + 1]) + half[jj + 1]
-    for row in range(rows):
-        first = row * cols
-        last = first + cols
-        moved = True
-        row_lo_x = 0.0
-        row_hi_x = 0.0
-        row_lo_y = 0.0
-        row_hi_y = 0.0
-        for j in range(count):
-            if moved:
-                # The row's box (again after an obstacle moved some of it).
-                row_lo_x = 1e300
-                row_hi_x = -1e300
-                row_lo_y = 1e300
-                row_hi_y = -1e300
-                for k in range(first, last):
-                    # Fixed vertices too: their edges are shield_edges' as well.
-                    i = k + k
-                    px = pos[i]
-                    qx = prev[i]
-                    py = pos[i + 1]
-                    qy = prev[i + 1]
-                    if px < row_lo_x:
-                        row_lo_x = px
-                    if qx < row_lo_x:
-                        row_lo_x = qx
-                    if px > row_hi_x:
-                        row_hi_x = px
-                    if qx > row_hi_x:
-                        row_hi_x = qx
-                    if py < row_lo_y:
-                        row_lo_y = py
-                    if qy < row_lo_y:
-                        row_lo_y = qy
-                    if py > row_hi_y:
-                        row_hi_y = py
-                    if qy > row_hi_y:
-                        row_hi_y = qy
-                if j == 0:
-                    rb = row * 4
-                    row_box[rb] = row_lo_x
-                    row_box[rb + 1] = row_hi_x
-                    row_box[rb + 2] = row_lo_y
-                    row_box[rb + 3] = row_hi_y
-                moved = False
-            b = j * 4
-            if row_hi_x < bounds[b] or row_lo_x > bounds[b + 1] or row_hi_y < bounds[b + 2] or \
-                    row_lo_y > bounds[b + 3]:
-                continue
-            rb = row * 4
-            row_box[rb] = min(row_box[rb], bounds[b])
-            row_box[rb + 1] = max(row_box[rb + 1], bounds[b + 1])
-            row_box[rb + 2] = min(row_box[rb + 2], bounds[b + 2])
-            row_box[rb + 3] = max(row_box[rb + 3], bounds[b + 3])
-            for k in range(first, last):
-                if inv_mass[k] == 0.0:
-                    continue
-                i = k + k
-                px = pos[i]
-                py = pos[i + 1]
-                qx = prev[i]
-                qy = prev[i + 1]
-                if (px < bounds[b] and qx < bounds[b]) or (px > bounds[b + 1] and qx > bounds[b + 1]) or \
-                        (py < bounds[b + 2] and qy < bounds[b + 2]) or (py > bounds[b + 3] and qy > bounds[b + 3]):
-                    continue
-                jj = j + j
-                ox0 = was[jj]
-                oy0 = was[jj + 1]
-                ox1 = now[jj]
-                oy1 = now[jj + 1]
-                hx = half[jj]
-                hy = half[jj + 1]
-                slide = 1.0 - friction[j]
-                # Relative to the obstacle: from (ax, ay) to (bx, by).
-                ax = qx - ox0
-                ay = qy - oy0
-                bx = px - ox1
-                by = py - oy1
-                dx = bx - ax
-                dy = by - ay
-                if shape[j] == 0:
-                    r = hx
-                    r2 = r * r
-                    b2 = bx * bx + by * by
-                    a2 = ax * ax + ay * ay
-                    if a2 < r2:
-                        # Started inside: out radially, if it is still in.
-                        if b2 < r2:
-                            if b2 > 0.0:
-                                s = r / sqrt(b2)
-                                bx = bx * s
-                                by = by * s
-                            else:
-                                bx = 0.0
-                                by = r
-                            px = ox1 + bx
-                            py = oy1 + by
-                            pos[i] = px
-                            pos[i + 1] = py
-                            moved = True
-                        continue
-                    # Entered? |a + t d| = r for t in [0, 1], moving inward.
-                    dd = dx * dx + dy * dy
-                    ad = ax * dx + ay * dy
-                    if ad >= 0.0 or dd == 0.0:
-                        continue
-                    disc = ad * ad - dd * (a2 - r2)
-                    if disc < 0.0:
-                        continue
-                    t = (-ad - sqrt(disc)) / dd
-                    if t > 1.0:
-                        continue
-                    if t < 0.0:
-                        t = 0.0
-                    ex = ax + t * dx
-                    ey = ay + t * dy
-                    # The entry point, exactly on the circle, and the surface's normal there.
-                    el = sqrt(ex * ex + ey * ey)
-                    nx = ex / el
-                    ny = ey / el
-                    ex = nx * r
-                    ey = ny * r
-                    # What was left of the step, less its part into the surface, slowed by friction.
-                    u = 1.0 - t
-                    rx = dx * u
-                    ry = dy * u
-                    rn = rx * nx + ry * ny
-                    if rn < 0.0:
-                        rx = rx - rn * nx
-                        ry = ry - rn * ny
-                    bx = ex + rx * slide
-                    by = ey + ry * slide
-                    b2 = bx * bx + by * by
-                    if b2 < r2:
-                        s = r / sqrt(b2)
-                        bx = bx * s
-                        by = by * s
-                    px = ox1 + bx
-                    py = oy1 + by
-                    pos[i] = px
-                    pos[i + 1] = py
-                    moved = True
-                    continue
-                # A box: inside is |x| < hx and |y| < hy.
-                if ax > -hx and ax < hx and ay > -hy and ay < hy:
-                    if bx > -hx and bx < hx and by > -hy and by < hy:
-                        # Started inside and still in: out through the nearest side.
-                        gx = hx - abs(bx)
-                        gy = hy - abs(by)
-                        if gx < gy:
-                            bx = hx if bx >= 0.0 else -hx
-                        else:
-                            by = hy if by >= 0.0 else -hy
-                        px = ox1 + bx
-                        py = oy1 + by
-                        pos[i] = px
-                        pos[i + 1] = py
-                        moved = True
-                    continue
-                # Entered? The slabs' entry and exit times along a + t d.
-                t_in = -1.0
-                t_out = 2.0
-                side = 0
-                if dx != 0.0:
-                    t1 = (-hx - ax) / dx
-                    t2 = (hx - ax) / dx
-                    if t1 > t2:
-                        tmp = t1
-                        t1 = t2
-                        t2 = tmp
-                    if t1 > t_in:
-                        t_in = t1
-                        side = 1
-                    if t2 < t_out:
-                        t_out = t2
-                elif ax <= -hx or ax >= hx:
-                    continue
-                if dy != 0.0:
-                    t1 = (-hy - ay) / dy
-                    t2 = (hy - ay) / dy
-                    if t1 > t2:
-                        tmp = t1
-                        t1 = t2
-                        t2 = tmp
-                    if t1 > t_in:
-                        t_in = t1
-                        side = 2
-                    if t2 < t_out:
-                        t_out = t2
-                elif ay <= -hy or ay >= hy:
-                    continue
-                if t_in >= t_out or t_in > 1.0 or t_out <= 0.0 or side == 0:
-                    continue
-                if t_in < 0.0:
-                    t_in = 0.0
-                u = 1.0 - t_in
-                if side == 1:
-                    # Through a vertical side: on it, sliding along y.
-                    bx = -hx if dx > 0.0 else hx
-                    by = ay + t_in * dy + dy * u * slide
-                else:
-                    by = -hy if dy > 0.0 else hy
-                    bx = ax + t_in * dx + dx * u * slide
-                px = ox1 + bx
-                py = oy1 + by
-                pos[i] = px
-                pos[i + 1] = py
-                moved = True
-
-
-def shield_edges(pos, prev, inv_mass, edge_a, edge_b, n_edges, cols, rows, count, shape, half,
-                 was, at, row_box, row_mask):
-    """No edge passes through a circle either (collide keeps the vertices out; a peg narrower
-    than the spacing, or a stretched cloth, would otherwise slip between two of them: a towel
-    on the seed's method fell through its peg). An edge whose segment enters a circle, its ends
-    outside, is moved out along the normal at its nearest point, its ends by their inverse
-    masses and their share of that point (a point-on-segment constraint), so that it touches.
-    Rows first: each row's box (row_box, as collide left it) with the next's marks the circles
-    that can meet its edges (row_mask: a bit per obstacle), and an edge in rows none meets
-    costs one lookup. Returns how many edges it moved."""
-    sqrt = math.sqrt
-    hits = 0
-    for row in range(rows):
-        b = row * 4
-        lo_x = row_box[b]
-        hi_x = row_box[b + 1]
-        lo_y = row_box[b + 2]
-        hi_y = row_box[b + 3]
-        if row + 1 < rows:
-            lo_x = min(lo_x, row_box[b + 4])
-            hi_x = max(hi_x, row_box[b + 5])
-            lo_y = min(lo_y, row_box[b + 6])
-            hi_y = max(hi_y, row_box[b + 7])
-        mask = 0
-        for j in range(count):
-            if shape[j] != 0:
-                continue
-            jj = j + j
-            if hi_x < at[jj] - half[jj] or lo_x > at[jj] + half[jj] or \
-                    hi_y < at[jj + 1] - half[jj + 1] or lo_y > at[jj + 1] + half[jj + 1]:
-                continue
-            mask = mask | (1 << j)
-        row_mask[row] = mask
-        if mask != 0:
-            hits += 1
-    moved = 0
-    if hits == 0:
-        return moved
-    for e in range(n_edges):
-        a = edge_a[e]
-        bb = edge_b[e]
-        row = (a if a < bb else bb) // cols
-        mask = row_mask[row]
-        if mask == 0:
+    kappa = cloth.kappa
+    lox = xi if xi < xj else xj
+    hix = xi if xi > xj else xj
+    loy = yi if yi < yj else yj
+    hiy = yi if yi > yj else yj
+    for o in range(cloth.n_obstacles):
+        if (only >= 0 and o != only) or not meets(cloth, o, lox, hix, loy, hiy):
             continue
-        wa = inv_mass[a]
-        wb = inv_mass[bb]
-        if wa == 0.0 and wb == 0.0:
+        oo = o + o
+        shape = cloth.obstacle_shape[o]
+        for c in range(corners(shape)):
+            corner(shape, at[oo], at[oo + 1], half[oo], half[oo + 1], c, xi, yi, xj, yj, g)
+            d = g[0]
+            if d >= CONTACT_GAP or d <= 0.0:
+                continue
+            barrier(d, kappa, b)
+            w = 1.0 - g[1]
+            add_force(acc, -b[1] * w, b[2] * w * w, g[2], g[3])
+
+
+def add_force(acc, f, k, ux, uy):
+    """acc[0..4] += a force f along u and a block k u u^T."""
+    acc[0] += f * ux
+    acc[1] += f * uy
+    acc[2] += k * ux * ux
+    acc[3] += k * ux * uy
+    acc[4] += k * uy * uy
+
+
+def vertex_terms(cloth, i, acc):
+    """acc[0..4] += the contact's force and block at vertex i where the cloth is now: its own
+    barrier, its edges' (each edge's share at i), and its friction."""
+    pos = cloth.pos
+    ii = i + i
+    xi = pos[ii]
+    yi = pos[ii + 1]
+    point_terms(cloth, i, xi, yi, -1, acc)
+    other = cloth.adj_other
+    for q in range(cloth.adj_start[i], cloth.adj_start[i + 1]):
+        if cloth.through[cloth.adj_edge[q]] != 0:
             continue
-        i = a + a
-        ii = bb + bb
-        for j in range(count):
-            if (mask & (1 << j)) == 0:
+        j = other[q]
+        edge_terms(cloth, i, xi, yi, j, pos[j + j], pos[j + j + 1], -1, acc)
+    friction_terms(cloth, i, xi, yi, acc)
+
+
+def friction_terms(cloth, i, xi, yi, acc):
+    """acc[0..4] += vertex i's friction at (xi, yi) (the module's comment)."""
+    fw = cloth.fric_w[i]
+    if fw <= 0.0:
+        return
+    ii = i + i
+    b = cloth.bar
+    tx = cloth.fric_t[ii]
+    ty = cloth.fric_t[ii + 1]
+    oo = cloth.fric_o[i] * 2
+    y = tx * (xi - cloth.prev[ii] - cloth.obstacle_moved[oo]) + \
+        ty * (yi - cloth.prev[ii + 1] - cloth.obstacle_moved[oo + 1])
+    sign = 1.0
+    if y < 0.0:
+        sign = -1.0
+        y = -y
+    friction(y, FRICTION_SLIP * cloth.h, b)
+    add_force(acc, -fw * b[1] * sign, fw * b[2], tx, ty)
+
+
+def push_out(cloth, i, x, y, acc):
+    """A free vertex that began the step inside an obstacle (a scene put it there, or a pin
+    let go there) is pushed out of the nearest side by a spring of its own inertia's stiffness
+    to CONTACT_GAP outside: its edges, through the obstacle, hold no barrier until it is out."""
+    g = cloth.geo
+    at = cloth.obstacle_at
+    half = cloth.obstacle_half
+    w = cloth.mass[i] * cloth.w_scale
+    for o in range(cloth.n_obstacles):
+        oo = o + o
+        point(cloth.obstacle_shape[o], at[oo], at[oo + 1], half[oo], half[oo + 1], x, y, g)
+        if g[0] < CONTACT_GAP:
+            add_force(acc, w * (CONTACT_GAP - g[0]), w, g[2], g[3])
+
+
+def point_energy(cloth, i, x, y):
+    """point_terms' energy with vertex i at (x, y) (BLOCKED at or inside an obstacle)."""
+    g = cloth.geo
+    at = cloth.obstacle_at
+    half = cloth.obstacle_half
+    s = 0.0
+    if cloth.inside[i] != 0:
+        w = cloth.mass[i] * cloth.w_scale
+        for o in range(cloth.n_obstacles):
+            oo = o + o
+            point(cloth.obstacle_shape[o], at[oo], at[oo + 1], half[oo], half[oo + 1], x, y, g)
+            if g[0] < CONTACT_GAP:
+                s += 0.5 * w * (CONTACT_GAP - g[0]) * (CONTACT_GAP - g[0])
+        return s
+    b = cloth.bar
+    kappa = cloth.kappa
+    for o in range(cloth.n_obstacles):
+        if not meets(cloth, o, x, x, y, y):
+            continue
+        oo = o + o
+        point(cloth.obstacle_shape[o], at[oo], at[oo + 1], half[oo], half[oo + 1], x, y, g)
+        d = g[0]
+        if d >= CONTACT_GAP:
+            continue
+        if d <= 0.0:
+            return BLOCKED
+        barrier(d, kappa, b)
+        s += b[0]
+    return s
+
+
+def edge_energy(cloth, i, xi, yi, j, xj, yj):
+    """edge_terms' energy of the edge i-j with its ends at these places (BLOCKED where it would
+    meet an obstacle's point feature)."""
+    g = cloth.geo
+    b = cloth.bar
+    at = cloth.obstacle_at
+    half = cloth.obstacle_half
+    kappa = cloth.kappa
+    lox = xi if xi < xj else xj
+    hix = xi if xi > xj else xj
+    loy = yi if yi < yj else yj
+    hiy = yi if yi > yj else yj
+    s = 0.0
+    for o in range(cloth.n_obstacles):
+        if not meets(cloth, o, lox, hix, loy, hiy):
+            continue
+        oo = o + o
+        shape = cloth.obstacle_shape[o]
+        for c in range(corners(shape)):
+            corner(shape, at[oo], at[oo + 1], half[oo], half[oo + 1], c, xi, yi, xj, yj, g)
+            d = g[0]
+            if d >= CONTACT_GAP:
                 continue
-            jj = j + j
-            cx = at[jj]
-            cy = at[jj + 1]
-            hx = half[jj]
-            hy = half[jj + 1]
-            ax = pos[i]
-            ay = pos[i + 1]
-            dx = pos[ii] - ax
-            dy = pos[ii + 1] - ay
-            dd = dx * dx + dy * dy
-            if dd < TINY2:
-                continue
-            nx = 0.0
-            ny = 0.0
-            depth = 0.0
-            t = 0.0
-            if shape[j] == 0:
-                t = ((cx - ax) * dx + (cy - ay) * dy) / dd
-                if t <= 0.0 or t >= 1.0:
+            if d <= 0.0:
+                return BLOCKED
+            barrier(d, kappa, b)
+            s += b[0]
+    return s
+
+
+def friction_energy(cloth, i, x, y):
+    """Vertex i's friction energy with it at (x, y)."""
+    fw = cloth.fric_w[i]
+    if fw <= 0.0:
+        return 0.0
+    ii = i + i
+    oo = cloth.fric_o[i] * 2
+    u = cloth.fric_t[ii] * (x - cloth.prev[ii] - cloth.obstacle_moved[oo]) + \
+        cloth.fric_t[ii + 1] * (y - cloth.prev[ii + 1] - cloth.obstacle_moved[oo + 1])
+    friction(u if u >= 0.0 else -u, FRICTION_SLIP * cloth.h, cloth.bar)
+    return fw * cloth.bar[0]
+
+
+def vertex_energy(cloth, i, x, y):
+    """cloth.sum[0] = the contact's terms that hold vertex i, with it at (x, y) and the rest
+    where they are (BLOCKED where it or an edge of it would meet an obstacle)."""
+    pos = cloth.pos
+    other = cloth.adj_other
+    s = point_energy(cloth, i, x, y)
+    for q in range(cloth.adj_start[i], cloth.adj_start[i + 1]):
+        if cloth.through[cloth.adj_edge[q]] != 0:
+            continue
+        j = other[q]
+        s += edge_energy(cloth, i, x, y, j, pos[j + j], pos[j + j + 1])
+    cloth.sum[0] = s + friction_energy(cloth, i, x, y)
+
+
+def lag_friction(cloth):
+    """Each free vertex's friction for the step, from the barrier's push on it where the step
+    begins (IPC's lagged friction): mu lambda summed over the obstacles that push it, the
+    tangent to their whole push, and the obstacle that pushes hardest (whose move its slide is
+    measured against). cloth.pressed: the vertices the barrier pushes and no spring pulls (a
+    crumpled pile's: obstacles.correct_where). A piece with a vertex
+    near an obstacle is marked (piece_touched: the energy's account leaves it alone,
+    energy.py)."""
+    pos = cloth.pos
+    acc = cloth.acc
+    other = cloth.adj_other
+    for i in range(cloth.n_verts):
+        cloth.fric_w[i] = 0.0
+        cloth.pressed[i] = 0
+    for z in range(zone_size(cloth)):
+        i = zone_vertex(cloth, z)
+        if cloth.fixed[i] != 0 or not ring_near(cloth, i, pos[i + i], pos[i + i + 1]):
+            continue
+        cloth.piece_touched[cloth.piece[i]] = 1
+        xi = pos[i + i]
+        yi = pos[i + i + 1]
+        fx = 0.0
+        fy = 0.0
+        mu = 0.0
+        best = 0.0
+        for o in range(cloth.n_obstacles):
+            acc[0] = 0.0
+            acc[1] = 0.0
+            if cloth.inside[i] == 0:
+                point_terms(cloth, i, xi, yi, o, acc)
+            for q in range(cloth.adj_start[i], cloth.adj_start[i + 1]):
+                if cloth.through[cloth.adj_edge[q]] != 0:
                     continue
-                # A chord of the circle is where a cloth lying on it has its edges: an edge
-                # may cut in as deep as a chord of its length, never past half the radius (to
-                # slip through it must pass the centre).
-                re = sqrt(max(hx * hx - 0.25 * dd, 0.0))
-                if re < 0.5 * hx:
-                    re = 0.5 * hx
-                # Which side of the edge the centre is on now, and was on when the step began
-                # (swept: an edge that passed the centre within the step goes back to its side,
-                # not on through).
-                v = sqrt(dd)
-                px = -dy / v
-                py = dx / v
-                side = (cx - ax) * px + (cy - ay) * py
-                qx = prev[i]
-                qy = prev[i + 1]
-                ex = prev[ii] - qx
-                ey = prev[ii + 1] - qy
-                before = (was[jj] - qx) * (-ey) + (was[jj + 1] - qy) * ex
-                ee = ex * ex + ey * ey
-                tb = ((was[jj] - qx) * ex + (was[jj + 1] - qy) * ey) / ee if ee > TINY2 else 0.5
-                if before == 0.0 or tb <= 0.0 or tb >= 1.0:
-                    before = side
-                if before >= 0.0:
-                    depth = re - side
-                    nx = -px
-                    ny = -py
-                else:
-                    depth = re + side
-                    nx = px
-                    ny = py
-                if depth <= 0.0:
+                j = other[q]
+                edge_terms(cloth, i, xi, yi, j, pos[j + j], pos[j + j + 1], o, acc)
+            f = sqrt(acc[0] * acc[0] + acc[1] * acc[1])
+            fx += acc[0]
+            fy += acc[1]
+            mu += cloth.obstacle_friction[o] * f
+            if f > best:
+                best = f
+                cloth.fric_o[i] = o
+        f = sqrt(fx * fx + fy * fy)
+        if f > 0.0 and slack(cloth, i):
+            cloth.pressed[i] = 1
+        if f <= 0.0 or mu <= 0.0:
+            continue
+        cloth.fric_w[i] = mu
+        cloth.fric_t[i + i] = -fy / f
+        cloth.fric_t[i + i + 1] = fx / f
+
+
+def slack(cloth, i):
+    """Whether no spring of vertex i is longer than at rest."""
+    pos = cloth.pos
+    for q in range(cloth.adj_start[i], cloth.adj_start[i + 1]):
+        j = cloth.adj_other[q]
+        dx = pos[j + j] - pos[i + i]
+        dy = pos[j + j + 1] - pos[i + i + 1]
+        if dx * dx + dy * dy > cloth.adj_rest[q] * cloth.adj_rest[q]:
+            return False
+    return True
+
+
+def assemble(cloth, g, A):
+    """The contact's terms in G's gradient g and its Hessian A (terms.assemble adds them): each
+    free vertex's own barrier and friction on its block, each edge's barrier on both its ends'
+    blocks and the block between them."""
+    pos = cloth.pos
+    geo = cloth.geo
+    b = cloth.bar
+    acc = cloth.acc
+    at = cloth.obstacle_at
+    half = cloth.obstacle_half
+    for z in range(zone_size(cloth)):
+        i = zone_vertex(cloth, z)
+        if cloth.fixed[i] != 0:
+            continue
+        acc[0] = 0.0
+        acc[1] = 0.0
+        acc[2] = 0.0
+        acc[3] = 0.0
+        acc[4] = 0.0
+        point_terms(cloth, i, pos[i + i], pos[i + i + 1], -1, acc)
+        friction_terms(cloth, i, pos[i + i], pos[i + i + 1], acc)
+        g[i + i] -= acc[0]
+        g[i + i + 1] -= acc[1]
+        o = (i * 9 + DIAG) * 3
+        A[o] += acc[2]
+        A[o + 1] += acc[3]
+        A[o + 2] += acc[4]
+    for e in range(cloth.n_edges):
+        if cloth.through[e] != 0 or (cloth.loose == 0 and cloth.zone[cloth.edge_a[e]] == 0):
+            continue
+        a = cloth.edge_a[e]
+        c = cloth.edge_b[e]
+        xa = pos[a + a]
+        ya = pos[a + a + 1]
+        xc = pos[c + c]
+        yc = pos[c + c + 1]
+        kappa = cloth.kappa
+        for o in range(cloth.n_obstacles):
+            if not meets(cloth, o, xa if xa < xc else xc, xa if xa > xc else xc,
+                         ya if ya < yc else yc, ya if ya > yc else yc):
+                continue
+            oo = o + o
+            shape = cloth.obstacle_shape[o]
+            for f in range(corners(shape)):
+                corner(shape, at[oo], at[oo + 1], half[oo], half[oo + 1], f, xa, ya, xc, yc, geo)
+                d = geo[0]
+                if d >= CONTACT_GAP or d <= 0.0:
                     continue
-            else:
-                # Boxes: their vertices' test only. An edge's push at a box's corners kept a
-                # cloth lying over them from settling (0.2 m/s after 8 s, 10x10 on a box), and
-                # a box's corner slips between two vertices only when the cloth is stretched
-                # past the box's own size.
-                continue
-            s = 1.0 - t
-            den = s * s * wa + t * t * wb
-            if den == 0.0:
-                continue
-            lam = depth / den
-            ka = wa * s * lam
-            kb = wb * t * lam
-            pos[i] += ka * nx
-            pos[i + 1] += ka * ny
-            pos[ii] += kb * nx
-            pos[ii + 1] += kb * ny
-            moved += 1
-    return moved
+                barrier(d, kappa, b)
+                wc = geo[1]
+                wa = 1.0 - wc
+                ux = geo[2]
+                uy = geo[3]
+                g[a + a] += b[1] * wa * ux
+                g[a + a + 1] += b[1] * wa * uy
+                g[c + c] += b[1] * wc * ux
+                g[c + c + 1] += b[1] * wc * uy
+                add_block(A, a, DIAG, b[2] * wa * wa, ux, uy)
+                add_block(A, c, DIAG, b[2] * wc * wc, ux, uy)
+                slot = cloth.slot[e]
+                add_block(A, a, slot, b[2] * wa * wc, ux, uy)
+                add_block(A, c, 8 - slot, b[2] * wa * wc, ux, uy)
+
+
+def add_block(A, a, slot, k, ux, uy):
+    """A's block of vertex a's stencil slot `slot` += k u u^T."""
+    o = (a * 9 + slot) * 3
+    A[o] += k * ux * ux
+    A[o + 1] += k * ux * uy
+    A[o + 2] += k * uy * uy
+
+
+def energy_along(cloth, d):
+    """cloth.sum[1] = the contact's terms of G at pos + alpha d, alpha = cloth.alpha (BLOCKED
+    where the cloth would meet an obstacle), over the zone (ccd.zone: a correction that takes a
+    vertex beyond its leash is tested where it is made, ccd.move_clear)."""
+    pos = cloth.pos
+    alpha = cloth.alpha
+    s = 0.0
+    for z in range(zone_size(cloth)):
+        i = zone_vertex(cloth, z)
+        if cloth.fixed[i] != 0:
+            continue
+        x = pos[i + i] + alpha * d[i + i]
+        y = pos[i + i + 1] + alpha * d[i + i + 1]
+        s += point_energy(cloth, i, x, y) + friction_energy(cloth, i, x, y)
+        if s >= BLOCKED:
+            cloth.sum[1] = BLOCKED
+            return
+    for e in range(cloth.n_edges):
+        if cloth.through[e] != 0 or (cloth.loose == 0 and cloth.zone[cloth.edge_a[e]] == 0):
+            continue
+        a = cloth.edge_a[e]
+        c = cloth.edge_b[e]
+        s += edge_energy(cloth, a, pos[a + a] + alpha * d[a + a], pos[a + a + 1] + alpha * d[a + a + 1],
+                         c, pos[c + c] + alpha * d[c + c], pos[c + c + 1] + alpha * d[c + c + 1])
+        if s >= BLOCKED:
+            cloth.sum[1] = BLOCKED
+            return
+    cloth.sum[1] = s

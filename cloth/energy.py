@@ -80,17 +80,6 @@ def take_stock(cloth):
     cloth.stock = 1
 
 
-def before_contact(cloth):
-    """Before the obstacles push the cloth out (its stage before obstacles.push_out): where the
-    solve left it, so that no_gain knows which pieces an obstacle touched in the step."""
-    if cloth.stock == 0:
-        return
-    pos = cloth.pos
-    seen = cloth.solved_pos
-    for t in range(2 * cloth.n_verts):
-        seen[t] = pos[t]
-
-
 def no_gain(cloth):
     """After the step (its stage after the integrator's finish): a step that raised a piece's
     energy is unfinished, and is solved once more from where it stopped (the step's stages from
@@ -109,21 +98,12 @@ def no_gain(cloth):
 
 
 def gained(cloth):
-    """Whether the step raised the energy of a piece no obstacle has pushed in it (each push
-    marks its pieces in piece_touched), with each piece's energy now in piece_energy."""
+    """Whether the step raised the energy of a piece no obstacle is near (contact.lag_friction
+    marks those in piece_touched: outside an obstacle is not a convex set, and the module's
+    argument says nothing of a piece that touches one), with each piece's energy now in
+    piece_energy."""
     by_piece(cloth)
-    n = cloth.n_verts
-    piece = cloth.piece
     touched = cloth.piece_touched
-    if cloth.n_obstacles > 0:
-        # A piece an obstacle pushed out in this step keeps its gain: outside an obstacle is
-        # not a convex set, and a push is no term of G, so the module's argument says nothing
-        # of it (a free chain sliding off a frictionless circle lost its motion to it).
-        pos = cloth.pos
-        seen = cloth.solved_pos
-        for k in range(n):
-            if pos[k + k] != seen[k + k] or pos[k + k + 1] != seen[k + k + 1]:
-                touched[piece[k]] = 1
     e = cloth.piece_energy
     before = cloth.energy_before
     for p in range(cloth.n_pieces):

@@ -25,6 +25,7 @@ from cloth.values import SceneError
 from cloth.topology import walk_grip, label_pieces
 from cloth.integrate import rest_at, restart_at
 from cloth.terms import inertia_weight, hand_energy, spring_energy
+from cloth.obstacles import fasten
 
 # A person's pull: enough to lift and carry every preset's cloth in the heaviest fabric the
 # page offers (the Large cloth, 2 x 2 m of denim, weighs 16 N) and a little more, not so much
@@ -201,6 +202,7 @@ def refix(cloth):
     g2 = cloth.gravity_x * cloth.gravity_x + cloth.gravity_y * cloth.gravity_y
     if g2 < 9.81 * 9.81:
         g2 = 9.81 * 9.81     # in weak or no gravity, the imbalance is still against 1 g
+    cloth.g_ref = math.sqrt(g2)
     load2 = 0.0
     for k in range(cloth.n_verts):
         fixed = 1 if cloth.pinned[k] != 0 and cloth.grip[k] < 0 else 0
@@ -225,12 +227,14 @@ def refix(cloth):
     changed = 0
     for k in range(cloth.n_verts):
         cloth.falling[k] = 1 - held[cloth.piece[k]]
+        cloth.flying[k] = cloth.falling[k]
         # A piece nothing holds carries no load for the coarse grids to spread: its guess is
         # its fall and its sweeps do the rest (coarse.py).
         cloth.uncorrected[k] = 1 if cloth.fixed[k] != 0 or cloth.falling[k] != 0 else 0
         if cloth.uncorrected[k] != cloth.mg_uncorrected[k] or cloth.grip[k] != cloth.mg_grip[k]:
             changed = 1
     cloth.mg_changed = changed
+    fasten(cloth)
 
 
 def aim_hands(cloth):

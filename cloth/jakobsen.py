@@ -16,10 +16,15 @@ v = (x' - x) / h + a h / 2.
 
 import math
 
+from cloth.obstacles import project
+
 # Its own Verlet, not cloth/integrate.py's steps.
 ORDER = 0
 # Its rigid edges have no forces to balance (cloth.imbalance stays 0).
 RESIDUAL = False
+# Its relaxation knows no contact's barrier: it takes the contact as a constraint
+# (obstacles.project), and the cloth moves by obstacles.accept after it.
+BARRIER = False
 
 
 def prepare(cloth):
@@ -86,6 +91,8 @@ def solve(cloth):
             pos[ia + 1] += dy * sa
             pos[ib] -= dx * sb
             pos[ib + 1] -= dy * sb
+        if cloth.n_obstacles > 0:
+            project(cloth)
         cloth.sweeps += 1
 
 

@@ -15,6 +15,7 @@ import math
 from cloth.fabrics import fabric, DEFAULT_FABRIC
 from cloth.keys import MODEL, spec
 from cloth.hands import CLAMP, HAND_RADIUS  # a hand on a clamp's end carries the whole clamp
+from cloth.ccd import CONTACT_GAP
 
 # Two corners: the right clamp is carried in to CORNER_SPAN of the width over CARRY_FRAMES
 # (a smooth start and stop), so the cloth hangs slack, its top edge sagging. Carried, not put
@@ -113,7 +114,9 @@ def preset_scene(name, cols, rows):
         # A towel one vertex wide (cols 1) hangs from a peg PEG of a spacing wide.
         x0 = 0.5 * w * (1.0 - PEG) if w > 0.0 else -0.5 * PEG * h
         x1 = 0.5 * w * (1.0 + PEG) if w > 0.0 else 0.5 * PEG * h
-        scene['obstacles'] = [{'box': [x0, 0.0, x1, PEG_HEIGHT], 'friction': 0.5}]
+        # The peg's underside a contact's reach above the clamped row, which it holds
+        # (obstacles.fasten): the edges from the clamp touch it without a barrier's push.
+        scene['obstacles'] = [{'box': [x0, CONTACT_GAP, x1, CONTACT_GAP + PEG_HEIGHT], 'friction': 0.5}]
     if name == 'tearable':
         scene['tear'] = TEARABLE_STRAIN
     if name == 'flag':

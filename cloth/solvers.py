@@ -1,6 +1,8 @@
 """The solvers' code, registered under the names cloth/keys.py's SOLVER_TABLE gives them (in its
 order): a solver is a module with ORDER (the highest order of cloth/integrate.py's steps it
 takes; 0: it has its own integrator), RESIDUAL (whether its solve measures cloth.imbalance),
+BARRIER (whether it minimises G with the contact's barrier, else it takes the contact as a
+constraint: cloth/obstacles.py),
 prepare(cloth) (its work arrays) and a step's three stages, predict(cloth), solve(cloth) and
 finish(cloth). Adding one is its module, its row in SOLVER_TABLE and its line here.
 

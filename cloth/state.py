@@ -53,6 +53,8 @@ class Cloth:
         self.pred = f64(2 * n)
         self.base = f64(2 * n)
         self.falling = i32(n)     # 1 where nothing holds the vertex's piece (hands.refix)
+        self.flying = i32(n)      # 1 where it falls freely in this step: falling, and no
+                                  # obstacle near its piece (obstacles.advance)
         self.uncorrected = i32(n)  # 1 where a vertex takes no coarse correction: fixed or falling
         self.piece = i32(n)       # its connected piece (topology.label_pieces)
         self.stack = i32(n)
@@ -64,8 +66,7 @@ class Cloth:
         self.energy_before = f64(n)   # per piece: its energy before a step (energy.take_stock)
         self.stock = 0                # 1 when it was taken for this step
         self.piece_motion = f64(3 * n)  # per piece nothing holds: mass, then its velocity
-        self.solved_pos = f64(2 * n)  # pos before the obstacles' push (energy.before_contact)
-        self.piece_touched = i32(n)   # per piece: 1 if the push moved it (energy.no_gain)
+        self.piece_touched = i32(n)   # per piece: 1 if it is near an obstacle (energy.no_gain)
         self.mass = f64(n)
         self.inv_mass = f64(n)    # 1 / mass, 0 where fixed (obstacles and air read it)
         self.fixed = i32(n)
@@ -127,8 +128,9 @@ class Cloth:
         # the air's clock (cloth/air.py)
         self.air_t = 0.0
         # obstacles (cloth/obstacles.py): each one's shape, half width and height, friction,
-        # and centre: where it is (`at`), where it was when the step began (`was`), and where
-        # an `obstacle` action sends it by the end of the frame (`to`)
+        # and centre: where it is (`at`), where it was when the step began (`was`), where the
+        # frame began (`from`), and where an `obstacle` action sends it by the end of the
+        # frame (`to`)
         obstacles = scene.obstacles
         m = len(obstacles)
         self.n_obstacles = m
@@ -139,16 +141,27 @@ class Cloth:
         self.obstacle_was = f64(2 * m)
         self.obstacle_to = f64(2 * m)
         self.obstacle_from = f64(2 * m)
-        self.obstacle_bounds = f64(4 * m)
-        self.obstacle_row_box = f64(4 * rows if m > 0 else 0)
-        self.obstacle_row_mask = i32(rows if m > 0 else 0)
+        self.obstacle_aim = f64(2 * m)     # where it is sent in this step (obstacles.advance)
+        self.obstacle_moved = f64(2 * m)   # how far it went in this step (obstacles.carry)
+        self.obstacle_bounds = f64(4 * m)  # its box, grown by the contact's reach
+        # the contact's arrays (contact.prepare, for a scene with obstacles)
+        self.guess = f64(0)
+        self.ring = f64(0)
+        self.g_ref = 9.81         # the weight's scale per kg: |g|, at least 1 g (hands.refix)
+        self.kappa = 0.0          # the contact's barrier's stiffness (step.configure)
+        self.barrier = True       # whether the solver has it (else obstacles.project)
+        self.touching = 0         # 1 while the cloth may touch an obstacle (obstacles.advance)
+        self.loose = 1            # 1 while every move is tested (ccd.zone)
+        self.n_zone = 0
+        self.leash_now = 0.0
         for j in range(m):
             o = obstacles[j]
             self.obstacle_shape[j] = o[0]
             self.obstacle_half[j + j] = o[3]
             self.obstacle_half[j + j + 1] = o[4]
             self.obstacle_friction[j] = o[5]
-            for c in [self.obstacle_at, self.obstacle_was, self.obstacle_to, self.obstacle_from]:
+            for c in [self.obstacle_at, self.obstacle_was, self.obstacle_to, self.obstacle_from,
+                      self.obstacle_aim]:
                 c[j + j] = o[1]
                 c[j + j + 1] = o[2]
         # the rest grid: row 0 at y = 0, x to the right, y up

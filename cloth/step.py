@@ -28,6 +28,8 @@ from cloth import energy
 from cloth import measure
 from cloth import hands
 from cloth import obstacles
+from cloth import contact
+from cloth.ccd import CONTACT_GAP
 from cloth import air
 from cloth import sleep
 
@@ -76,17 +78,21 @@ def configure(cloth, scene):
     cloth.solver = solver_index(scene.solver)
     cloth.seed = scene.solver == SEED_SOLVER
     cloth.tear_limit[0] = (1.0 + scene.tear) * (1.0 + scene.tear)
+    cloth.kappa = scene.stretch * CONTACT_GAP / 14.0
     solver = REGISTRY[cloth.solver]
     cloth.max_order = solver[1].ORDER
+    cloth.barrier = solver[1].BARRIER
     integrate.configure(cloth, scene)
     cloth.mg_stale = True
     solver[1].prepare(cloth)
+    contact.prepare(cloth)
     cloth.frame_stages = []
     windy = scene.drag > 0.0 and (scene.wind_x != 0.0 or scene.wind_y != 0.0)
     if windy:
         cloth.frame_stages.append(air.feel_air)
     cloth.stages = [hands.aim_hands]
-    if cloth.n_obstacles > 0:
+    touching = cloth.n_obstacles > 0
+    if touching:
         cloth.stages.append(obstacles.advance)
     # A backward-Euler step of a cloth nothing drives raises no energy (energy.py): not with
     # wind, which does work.
@@ -96,11 +102,13 @@ def configure(cloth, scene):
     cloth.stages.append(solver[2])
     if solver[2] == integrate.predict:
         cloth.stages.append(hands.hold)
+    if touching:
+        cloth.stages.append(obstacles.begin)
     solving = [solver[3]]
-    if cloth.n_obstacles > 0:
-        if no_gain:
-            solving.append(energy.before_contact)
-        solving.append(obstacles.push_out)
+    if touching and not solver[1].BARRIER:
+        # A solver without the contact's barrier moves the cloth only as far as its edges
+        # sweep no obstacle.
+        solving.append(obstacles.accept)
     solving.append(solver[4])
     for i in range(len(solving)):
         cloth.stages.append(solving[i])

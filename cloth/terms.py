@@ -26,6 +26,7 @@ only shortens a step; the minimum, where every force is 0, is the same.
 from math import sqrt
 
 from cloth.multigrid import DIAG
+from cloth import contact
 
 
 def inertia_weight(cloth, i):
@@ -216,6 +217,8 @@ def assemble(cloth, g, A):
         A[o] += t[2]
         A[o + 1] += t[3]
         A[o + 2] += t[4]
+    if cloth.n_obstacles > 0:
+        contact.assemble(cloth, g, A)
     for i in range(n):
         if fixed[i] != 0:
             g[i + i] = 0.0
@@ -274,4 +277,30 @@ def energy_along(cloth, d):
         dx = pos[ii] + alpha * d[ii] - cloth.aim[ii]
         dy = pos[ii + 1] + alpha * d[ii + 1] - cloth.aim[ii + 1]
         s += hand_energy(cloth.grip_f[i], cloth.grip_f[i] / cloth.grip_k[i], dx * dx + dy * dy)
+    if cloth.n_obstacles > 0:
+        contact.energy_along(cloth, d)
+        s += cloth.sum[1]
     cloth.out[1] = s
+
+
+def vertex_energy(cloth, i, x, y):
+    """cloth.sum[2] = the terms of G that hold vertex i, with i at (x, y) and the rest of the
+    cloth where it is: its inertia, springs and hand, and the contact's (BLOCKED where an edge
+    of it would meet an obstacle)."""
+    pos = cloth.pos
+    ii = i + i
+    ex = x - cloth.pred[ii]
+    ey = y - cloth.pred[ii + 1]
+    s = 0.5 * inertia_weight(cloth, i) * (ex * ex + ey * ey)
+    other = cloth.adj_other
+    for q in range(cloth.adj_start[i], cloth.adj_start[i + 1]):
+        j = other[q] + other[q]
+        s += spring_energy(cloth.adj_k[q], cloth.adj_rest[q], pos[j] - x, pos[j + 1] - y)
+    if cloth.grip[i] >= 0:
+        dx = x - cloth.aim[ii]
+        dy = y - cloth.aim[ii + 1]
+        s += hand_energy(cloth.grip_f[i], cloth.grip_f[i] / cloth.grip_k[i], dx * dx + dy * dy)
+    if cloth.n_obstacles > 0:
+        contact.vertex_energy(cloth, i, x, y)
+        s += cloth.sum[0]
+    cloth.sum[2] = s

@@ -66,6 +66,7 @@ def build(cloth, stretch, shear):
     cloth.adj_start = i32(n + 1)
     cloth.adj_fill = i32(n)
     cloth.adj_other = i32(2 * m)
+    cloth.adj_edge = i32(2 * m)
     cloth.adj_rest = f64(2 * m)
     cloth.adj_k = f64(2 * m)
     restiffen(cloth, stretch, shear)
@@ -118,7 +119,7 @@ def on_border(cloth, k):
 
 
 def adjacency(cloth):
-    """degree[] and the CSR lists (adj_start, adj_other, adj_rest, adj_k) of the edges there
+    """degree[] and the CSR lists (adj_start, adj_other, adj_edge, adj_rest, adj_k) of the edges there
     are now, in the arrays made for the whole grid (edges only ever go)."""
     n = cloth.n_verts
     m = cloth.n_edges
@@ -144,11 +145,13 @@ def adjacency(cloth):
         q = start[a] + fill[a]
         fill[a] += 1
         cloth.adj_other[q] = b
+        cloth.adj_edge[q] = e
         cloth.adj_rest[q] = cloth.rest[e]
         cloth.adj_k[q] = cloth.stiff[e]
         q = start[b] + fill[b]
         fill[b] += 1
         cloth.adj_other[q] = a
+        cloth.adj_edge[q] = e
         cloth.adj_rest[q] = cloth.rest[e]
         cloth.adj_k[q] = cloth.stiff[e]
 

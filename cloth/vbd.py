@@ -32,13 +32,16 @@ import math
 from cloth.host import f64, i32
 from cloth.multigrid import hierarchy
 from cloth.coarse import correct
-from cloth.contact import keep_out, unopposed
-from cloth.terms import vertex
+from cloth.contact import vertex_terms
+from cloth.ccd import HALVINGS, ring_near, path_clear, margin_of, move_clear
+from cloth.terms import vertex, vertex_energy
 
 # Its steps are BDF2 (cloth/integrate.py), backward Euler after one left off balance.
 ORDER = 2
 # Its last sweep measures cloth.imbalance (sweep).
 RESIDUAL = True
+# Whether its sweeps minimise G with the contact's barrier in it (cloth/contact.py).
+BARRIER = True
 # A hand moved fast pulls the whole cloth a little and the cloth near it a lot, and the
 # scene's budget leaves both behind on a fine grid: one correction a step carries part of the
 # far field, and a sweep carries a change about one vertex onward, so the cells between the
@@ -183,6 +186,7 @@ def let_fall(cloth):
     arest = cloth.adj_rest
     fixed = cloth.fixed
     grip = cloth.grip
+    contact = cloth.n_obstacles > 0
     for i in range(cloth.n_verts):
         if fixed[i] != 0 or grip[i] >= 0:
             continue
@@ -207,7 +211,8 @@ def let_fall(cloth):
             if dx * dx + dy * dy >= r2 or ex * ex + ey * ey >= r2:
                 free = False
                 break
-        if free:
+        if free and not (contact and ring_near(cloth, i, px, py)):
+            # (Near an obstacle the target is not its minimum: the barrier is in G.)
             pos[ii] = px
             pos[ii + 1] = py
 
@@ -270,6 +275,9 @@ def relax(cloth, forward, last, verts, n):
             xi = pos[ii]
             yi = pos[ii + 1]
             vertex(cloth, i, again == 0, acc)
+            near = contact and ring_near(cloth, i, xi, yi)
+            if near:
+                vertex_terms(cloth, i, acc)
             fx = acc[0]
             fy = acc[1]
             hxx = acc[2]
@@ -277,8 +285,10 @@ def relax(cloth, forward, last, verts, n):
             hyy = acc[4]
             pulled = acc[5] != 0.0
             if last and again == 0 and grip[i] < 0:
-                f2 += unopposed(cloth, i, fx, fy) if contact else fx * fx + fy * fy
+                f2 += fx * fx + fy * fy
             det = hxx * hyy - hxy * hxy
+            if not (det > 0.0):
+                break           # no step to take (a block that lost its positive part to rounding)
             mx = (hyy * fx - hxy * fy) / det
             my = (hxx * fy - hxy * fx) / det
             stopped = False
@@ -300,12 +310,40 @@ def relax(cloth, forward, last, verts, n):
                     mx *= short
                     my *= short
                     stopped = True
-            pos[ii] = xi + mx
-            pos[ii + 1] = yi + my
             if contact:
-                keep_out(cloth, i)
+                descend(cloth, i, xi, yi, mx, my)
+            else:
+                pos[ii] = xi + mx
+                pos[ii + 1] = yi + my
             if not stopped:
                 break
     if last:
         cloth.out[0] = f2
         cloth.imbalance = sqrt(f2 / cloth.load2) if cloth.load2 > 0.0 else 0.0
+
+
+def descend(cloth, i, x0, y0, mx, my):
+    """Vertex i's Newton step (mx, my) where an obstacle is near: the whole step if its edges
+    sweep no obstacle and it lowers G, else the largest half, quarter, ... of it that does
+    (none after contact.HALVINGS). The barrier's curvature grows without bound toward the
+    obstacle, so a Newton step taken with its curvature here can overshoot into it."""
+    pos = cloth.pos
+    ii = i + i
+    if not ring_near(cloth, i, x0 + mx, y0 + my):
+        pos[ii] = x0 + mx
+        pos[ii + 1] = y0 + my
+        return
+    vertex_energy(cloth, i, x0, y0)
+    e0 = cloth.sum[2]
+    margin = margin_of(cloth, i)
+    f = 1.0
+    for k in range(HALVINGS):
+        x = x0 + f * mx
+        y = y0 + f * my
+        if path_clear(cloth, i, x0, y0, x, y, margin):
+            vertex_energy(cloth, i, x, y)
+            if cloth.sum[2] <= e0:
+                pos[ii] = x
+                pos[ii + 1] = y
+                return
+        f *= 0.5

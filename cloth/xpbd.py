@@ -11,6 +11,7 @@ A hand is one more constraint, its pull capped at its force."""
 import math
 
 from cloth.host import f64
+from cloth.obstacles import project
 
 # Its steps are position Verlet's, as XPBD's are (cloth/integrate.py, order 0): with one sweep
 # a substep its solve is never finished, and BDF2, which damps what a step leaves unfinished
@@ -19,6 +20,9 @@ ORDER = 0
 # Whether its solve measures cloth.imbalance (the legend's "how far from balance"): XPBD's
 # constraint sweeps do not compute the forces.
 RESIDUAL = False
+# Its sweeps know no contact's barrier: they take the contact as a constraint
+# (obstacles.project), and the cloth moves by obstacles.accept after them.
+BARRIER = False
 
 
 def prepare(cloth):
@@ -40,10 +44,12 @@ def solve(cloth):
     m = cloth.n_edges
     ws = cloth.w_scale
     sqrt = math.sqrt
-    # XPBD starts from the inertial target, where the constraints alone then pull it back.
+    # XPBD starts from the inertial target, where the constraints alone then pull it back
+    # (an obstacle's push added: obstacles.begin).
+    contact = cloth.n_obstacles > 0
     pred = cloth.pred
     for i in range(2 * cloth.n_verts):
-        pos[i] = pred[i]
+        pos[i] = pred[i] + (cloth.start_pos[i] - cloth.prev[i] if contact else 0.0)
     for e in range(m):
         lam[e] = 0.0
     for h in range(cloth.n_gripped):
@@ -95,4 +101,6 @@ def solve(cloth):
             s = dl / d * w
             pos[ii] += dx * s
             pos[ii + 1] += dy * s
+        if contact:
+            project(cloth)
         cloth.sweeps += 1
