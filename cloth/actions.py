@@ -1,8 +1,10 @@
 """A scene's script: its `actions`, checked, in frame order.
 
 Each is {"frame": f, "op": ...}: grab, move, release, pin, unpin (a vertex, and a `to` or
-`by`), set (scene keys changed on the running cloth at frame f), cut (a blade `from` -> `to`)
-and obstacle (obstacle `index` sent `to` a point over the next frame)."""
+`by`), set (scene keys changed on the running cloth at frame f), cut (a blade `from` -> `to`),
+obstacle (obstacle `index` sent `to` a point over the next frame) and carry (a pinned vertex
+and its clamp carried rigidly `to` a point over the next frame: a script's clamp, kinematic,
+where grab and move are a person's hand, of finite force)."""
 
 from cloth.host import kind_of, key_list, has_key
 from cloth.keys import MAX_ACTIONS, MAX_FRAMES, OPS, ACTION_KEYS, OBSTACLE_FAR
@@ -115,11 +117,13 @@ def parse_actions(actions, n, obstacles, check_set):
                 fail(where + '.by: a move takes "to" or "by", not both')
             to = point(a['by'], where + '.by')
         elif has_to:
-            if op != 'grab' and op != 'move':
-                fail(where + '.to: only grab and move take a target')
+            if op != 'grab' and op != 'move' and op != 'carry':
+                fail(where + '.to: only grab, move and carry take a target')
             to = point(a['to'], where + '.to')
         elif op == 'move':
             fail(where + '.to: missing (move needs a target "to": [x, y], or "by": [dx, dy] from where the hand took hold)')
+        elif op == 'carry':
+            fail(where + '.to: missing (carry needs a target "to": [x, y] for the pin)')
         action = Action(frame, op, vertex, has_to, to[0], to[1], None)
         action.by = has_by
         parsed.append(action)

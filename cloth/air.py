@@ -1,80 +1,207 @@
-"""The air: wind (`wind`, `drag`, `gust`) pushes each edge across itself by the air's velocity
-relative to it, so a hanging cloth leans and billows and a cloth moving with the air feels
-nothing. Felt once a frame, as the frame's impulse on the velocities: the air changes over
-seconds, not steps (once a step cost 18% of a dragged 120x120 frame), and the steady lean is
-the same. Only in a scene whose air moves: still air costs nothing (its stage is not chosen)."""
+"""The air: wind (`wind`, `drag`, `gust`) as a term of the step's energy, implicit in the cloth's
+velocity relative to the air.
+
+Each structural edge of length L stands for a strip of cloth one spacing s wide (the rows' edges
+take the air across the rows, the columns' across the columns: per area, as the key says; the
+diagonals stand for shear, not for more cloth). The air moving at w relative to the edge's
+middle, whose velocity is v, pushes it across itself by D ((w - v) . n) n, D = drag L s, half on
+each end. A force linear in the velocity the step ends with, v+ = (x+ - base) / h'
+(cloth/integrate.py), is the gradient of a quadratic in the positions:
+    Phi_e(x) = k_e / 2 (m_e . n - c_e)^2,   m_e = (x_a + x_b) / 2,   k_e = D / h',
+    c_e = (base_a + base_b) / 2 . n + h' (w - u) . n
+(u: what the integrator adds to (x+ - base) / h' to make its velocity, g h / 2 for the Verlet of
+XPBD and the seed's method, 0 otherwise), with the edge's normal n and its length L taken where
+the step began. Its force on each end is -k_e r n / 2 (r = m_e . n - c_e), its block k_e n n^T / 4
+on each end and between them: convex, so the step stays one minimum, and the air can never push
+the cloth past its own speed or make a stiff cloth flutter (felt once a frame as an explicit
+impulse, a curtain in a steady wind never came to rest at the page's frame time, and a free
+cloth was pushed 1e-4 m/s past the air). Under XPBD and the seed's method it is a compliant
+constraint of compliance 1 / k_e (project): the same term, minimised their way.
+
+Only in a scene whose air moves: still air costs nothing (its stages are not chosen). Gusts
+scale the wind by 1 + amplitude * GUST_PEAK * p (1 - p) (1 - 2p), p the phase in the period: a
+smooth wave from -1 to 1, polynomial so that both runtimes compute it to the bit.
+"""
 
 import math
+from math import sqrt
 
-# At most this share of the air's velocity across an edge relative to its ends is given to
-# each end in one frame: a vertex has up to four structural edges, and four such shares are half
-# that velocity, short of overshooting the air (an explicit drag is stable only while
-# drag dt / mass stays small; capped, any is).
-AIR_MOST = 0.125
-# Gusts: the wind times 1 + amplitude * GUST_PEAK * p (1 - p) (1 - 2p), p the phase in the
-# period: a smooth wave from -1 to 1, polynomial so that both runtimes compute it to the bit.
+from cloth.host import f64
+
 GUST_PEAK = 6.0 * math.sqrt(3.0)
 
 
-def feel_air(cloth):
+def prepare(cloth):
+    """The term's per-edge arrays (a scene whose air moves)."""
+    m = cloth.n_struct
+    if len(cloth.air_k) >= m and len(cloth.air_k) > 0:
+        return
+    cloth.air_k = f64(m if m > 0 else 1)      # k_e
+    cloth.air_n = f64(2 * m if m > 0 else 2)  # n
+    cloth.air_c = f64(m if m > 0 else 1)      # c_e
+    cloth.air_lam = f64(m if m > 0 else 1)    # its multiplier under project
+
+
+def gust(cloth, t):
+    """The wind's factor at time t."""
+    if cloth.scene.gust_amplitude <= 0.0:
+        return 1.0
+    q = t / cloth.scene.gust_period
+    p = q - math.floor(q)
+    return 1.0 + cloth.scene.gust_amplitude * GUST_PEAK * p * (1.0 - p) * (1.0 - 2.0 * p)
+
+
+def begin(cloth):
+    """The step's air (a stage after predict): each structural edge's k_e, n and c_e, from where
+    the step began (prev) and the wind at the step's end."""
+    f = gust(cloth, cloth.air_t + cloth.share * cloth.dt)
+    wx = cloth.scene.wind_x * f
+    wy = cloth.scene.wind_y * f
+    hp = cloth.h_bdf
+    # The velocity the step ends with is (x+ - base) / h' + u.
+    ux = 0.5 * cloth.gravity_x * hp if cloth.order == 0 else 0.0
+    uy = 0.5 * cloth.gravity_y * hp if cloth.order == 0 else 0.0
+    base = cloth.base if cloth.order > 0 else cloth.prev
+    prev = cloth.prev
+    drag = cloth.scene.drag * cloth.spacing / hp
+    for e in range(cloth.n_struct):
+        a = cloth.edge_a[e] + cloth.edge_a[e]
+        b = cloth.edge_b[e] + cloth.edge_b[e]
+        # n L: the edge (b - a) where the step began, turned a quarter
+        nx = prev[a + 1] - prev[b + 1]
+        ny = prev[b] - prev[a]
+        length = sqrt(nx * nx + ny * ny)
+        if length < 1e-15 or (cloth.fixed[cloth.edge_a[e]] != 0 and cloth.fixed[cloth.edge_b[e]] != 0):
+            cloth.air_k[e] = 0.0
+            continue
+        nx /= length
+        ny /= length
+        cloth.air_k[e] = drag * length
+        cloth.air_n[e + e] = nx
+        cloth.air_n[e + e + 1] = ny
+        cloth.air_c[e] = 0.5 * ((base[a] + base[b]) * nx + (base[a + 1] + base[b + 1]) * ny) + \
+            hp * ((wx - ux) * nx + (wy - uy) * ny)
+        cloth.air_lam[e] = 0.0
+
+
+def frame_passed(cloth):
+    """The air's clock, a frame on (a stage after the frame's steps)."""
     cloth.air_t += cloth.dt
-    f = 1.0
-    if cloth.scene.gust_amplitude > 0.0:
-        q = cloth.air_t / cloth.scene.gust_period
-        p = q - math.floor(q)
-        f = 1.0 + cloth.scene.gust_amplitude * GUST_PEAK * p * (1.0 - p) * (1.0 - 2.0 * p)
-    air = cloth.out
-    air[0] = cloth.scene.wind_x * f
-    air[1] = cloth.scene.wind_y * f
-    air[2] = 0.5 * cloth.scene.drag * cloth.spacing * cloth.dt
-    blow(cloth.pos, cloth.vel, cloth.vel_prev, cloth.inv_mass, cloth.edge_a, cloth.edge_b,
-         cloth.n_struct, air)
 
 
-def blow(pos, vel, vel_prev, inv_mass, edge_a, edge_b, n_edges, air):
-    """Each structural edge of length L stands for a strip of cloth one spacing s wide (the
-    rows' edges take the air across the rows, the columns' across the columns: per area, as
-    the key says; the diagonals stand for shear, not for more cloth): the air moving at v_rel
-    relative to it (its ends' mean velocity) pushes it with drag L s (v_rel . n) n along its
-    normal n, half on each end, over the frame dt: each end's velocity changes by
-    k w L (v_rel . n) n, k = drag s dt / 2, w its inverse mass (capped: AIR_MOST). The change
-    goes into the velocity BDF2 remembers from the last step too: its next step extrapolates
-    4/3 v - 1/3 v-, and an impulse in v alone would count 4/3 of itself.
-    air = [wind x, wind y, k]."""
-    sqrt = math.sqrt
-    wx = air[0]
-    wy = air[1]
-    k = air[2]
-    for e in range(n_edges):
-        a = edge_a[e]
-        b = edge_b[e]
-        wa = inv_mass[a]
-        wb = inv_mass[b]
-        if wa == 0.0 and wb == 0.0:
+def vertex_terms(cloth, i, x, y, acc):
+    """acc[0..4] += the air's force and block at vertex i, at (x, y), the rest where it is."""
+    pos = cloth.pos
+    for q in range(cloth.adj_start[i], cloth.adj_start[i + 1]):
+        e = cloth.adj_edge[q]
+        if e >= cloth.n_struct or cloth.air_k[e] == 0.0:
             continue
-        i = a + a
-        j = b + b
-        # n * L: the edge (b - a) turned a quarter
-        nx = pos[i + 1] - pos[j + 1]
-        ny = pos[j] - pos[i]
-        l2 = nx * nx + ny * ny
-        if l2 < 1e-30:
+        j = cloth.adj_other[q]
+        nx = cloth.air_n[e + e]
+        ny = cloth.air_n[e + e + 1]
+        k = cloth.air_k[e]
+        r = 0.5 * ((x + pos[j + j]) * nx + (y + pos[j + j + 1]) * ny) - cloth.air_c[e]
+        acc[0] -= 0.5 * k * r * nx
+        acc[1] -= 0.5 * k * r * ny
+        acc[2] += 0.25 * k * nx * nx
+        acc[3] += 0.25 * k * nx * ny
+        acc[4] += 0.25 * k * ny * ny
+
+
+def piece_push(cloth, acc):
+    """For vbd.keep_momentum: each piece nothing holds, p, gets the air's whole force on it where
+    the cloth is now (acc[6p + 1..2] +=) and its stiffness to a shift of the whole piece,
+    sum_e k_e n_e n_e^T (acc[6p + 3..5] +=)."""
+    pos = cloth.pos
+    for e in range(cloth.n_struct):
+        k = cloth.air_k[e]
+        a = cloth.edge_a[e]
+        if k == 0.0 or cloth.falling[a] == 0:
             continue
-        length = sqrt(l2)
-        rx = wx - 0.5 * (vel[i] + vel[j])
-        ry = wy - 0.5 * (vel[i + 1] + vel[j + 1])
-        across = (rx * nx + ry * ny) / l2
-        ca = k * wa * length
-        if ca > AIR_MOST:
-            ca = AIR_MOST
-        cb = k * wb * length
-        if cb > AIR_MOST:
-            cb = AIR_MOST
-        vel[i] += ca * across * nx
-        vel[i + 1] += ca * across * ny
-        vel[j] += cb * across * nx
-        vel[j + 1] += cb * across * ny
-        vel_prev[i] += ca * across * nx
-        vel_prev[i + 1] += ca * across * ny
-        vel_prev[j] += cb * across * nx
-        vel_prev[j + 1] += cb * across * ny
+        b = cloth.edge_b[e]
+        nx = cloth.air_n[e + e]
+        ny = cloth.air_n[e + e + 1]
+        r = 0.5 * ((pos[a + a] + pos[b + b]) * nx + (pos[a + a + 1] + pos[b + b + 1]) * ny) - cloth.air_c[e]
+        p6 = 6 * cloth.piece[a]
+        acc[p6 + 1] -= k * r * nx
+        acc[p6 + 2] -= k * r * ny
+        acc[p6 + 3] += k * nx * nx
+        acc[p6 + 4] += k * nx * ny
+        acc[p6 + 5] += k * ny * ny
+
+
+def vertex_energy(cloth, i, x, y):
+    """The air's terms that hold vertex i, with it at (x, y)."""
+    pos = cloth.pos
+    s = 0.0
+    for q in range(cloth.adj_start[i], cloth.adj_start[i + 1]):
+        e = cloth.adj_edge[q]
+        if e >= cloth.n_struct or cloth.air_k[e] == 0.0:
+            continue
+        j = cloth.adj_other[q]
+        r = 0.5 * ((x + pos[j + j]) * cloth.air_n[e + e] + (y + pos[j + j + 1]) * cloth.air_n[e + e + 1]) - \
+            cloth.air_c[e]
+        s += 0.5 * cloth.air_k[e] * r * r
+    return s
+
+
+def assemble(cloth, g, A, couple):
+    """The air's terms in G's gradient g and Hessian A (terms.assemble; `couple` adds a term
+    of two vertices to A)."""
+    pos = cloth.pos
+    for e in range(cloth.n_struct):
+        k = cloth.air_k[e]
+        if k == 0.0:
+            continue
+        a = cloth.edge_a[e]
+        b = cloth.edge_b[e]
+        nx = cloth.air_n[e + e]
+        ny = cloth.air_n[e + e + 1]
+        r = 0.5 * ((pos[a + a] + pos[b + b]) * nx + (pos[a + a + 1] + pos[b + b + 1]) * ny) - cloth.air_c[e]
+        g[a + a] += 0.5 * k * r * nx
+        g[a + a + 1] += 0.5 * k * r * ny
+        g[b + b] += 0.5 * k * r * nx
+        g[b + b + 1] += 0.5 * k * r * ny
+        couple(A, a, b, cloth.slot[e], 0.25 * k * nx * nx, 0.25 * k * nx * ny, 0.25 * k * ny * ny, 1.0)
+
+
+def energy_along(cloth, d):
+    """The air's terms of G at pos + alpha d, alpha = cloth.alpha."""
+    pos = cloth.pos
+    alpha = cloth.alpha
+    s = 0.0
+    for e in range(cloth.n_struct):
+        k = cloth.air_k[e]
+        if k == 0.0:
+            continue
+        a = cloth.edge_a[e] + cloth.edge_a[e]
+        b = cloth.edge_b[e] + cloth.edge_b[e]
+        r = 0.5 * ((pos[a] + alpha * d[a] + pos[b] + alpha * d[b]) * cloth.air_n[e + e] +
+                   (pos[a + 1] + alpha * d[a + 1] + pos[b + 1] + alpha * d[b + 1]) * cloth.air_n[e + e + 1]) - \
+            cloth.air_c[e]
+        s += 0.5 * k * r * r
+    return s
+
+
+def project(cloth):
+    """The air as a compliant constraint of XPBD's and the seed's sweeps: C_e = r, of compliance
+    1 / k_e, its gradient n / 2 at each end, each end moved by its inverse inertia weight
+    (XPBD's update, Macklin et al. 2016: d_lambda = (-C - lambda / k) / (sum w |grad C|^2 + 1 / k))."""
+    pos = cloth.pos
+    for e in range(cloth.n_struct):
+        k = cloth.air_k[e]
+        if k == 0.0:
+            continue
+        a = cloth.edge_a[e]
+        b = cloth.edge_b[e]
+        wa = 0.0 if cloth.fixed[a] != 0 else 1.0 / (cloth.mass[a] * cloth.w_scale)
+        wb = 0.0 if cloth.fixed[b] != 0 else 1.0 / (cloth.mass[b] * cloth.w_scale)
+        nx = cloth.air_n[e + e]
+        ny = cloth.air_n[e + e + 1]
+        r = 0.5 * ((pos[a + a] + pos[b + b]) * nx + (pos[a + a + 1] + pos[b + b + 1]) * ny) - cloth.air_c[e]
+        dl = (-r - cloth.air_lam[e] / k) / (0.25 * (wa + wb) + 1.0 / k)
+        cloth.air_lam[e] += dl
+        pos[a + a] += 0.5 * wa * dl * nx
+        pos[a + a + 1] += 0.5 * wa * dl * ny
+        pos[b + b] += 0.5 * wb * dl * nx
+        pos[b + b + 1] += 0.5 * wb * dl * ny

@@ -9,6 +9,7 @@ import math
 from cloth.multigrid import galerkin, restrict, prolong, pcg, factor_dense
 from cloth.terms import assemble, energy_along
 from cloth.ccd import move_clear
+from cloth.hands import catch_up_limit
 
 # The coarse operators are reused for this many steps: they are the Hessian where the cloth
 # was, and a rebuild costs about six sweeps (measured at 60x60); a cloth that moved more than a
@@ -74,20 +75,26 @@ def correct(cloth):
     cloth.corrected += 1
     if not (slope < 0.0):
         return
+    # No farther than a hand's patch may go in the step (hands.keep_up).
+    top = MOST_ALPHA
+    if cloth.n_gripped > 0:
+        top = catch_up_limit(cloth, d, top)
+        if not (top > 0.0):
+            return
     cloth.alpha = 0.0
     energy_along(cloth, d)
     g0 = cloth.out[1]
-    cloth.alpha = 1.0
+    cloth.alpha = top
     energy_along(cloth, d)
     g1 = cloth.out[1]
-    curv = g1 - g0 - slope
-    alpha = 1.0
+    curv = (g1 - g0 - slope * top) / (top * top)
+    alpha = top
     if curv > 0.0:
         alpha = -slope / (2.0 * curv)
-        if alpha > MOST_ALPHA:
-            alpha = MOST_ALPHA
+        if alpha > top:
+            alpha = top
     ga = g1
-    if alpha != 1.0:
+    if alpha != top:
         cloth.alpha = alpha
         energy_along(cloth, d)
         ga = cloth.out[1]

@@ -14,8 +14,8 @@ its hem at 3 m/s and let go, its lower half slack and folding, gained up to 23% 
 it moved with within half a second (24x24; 19% on a 60x60 towel; the solve run to the end,
 1000 sweeps, loses 20-46%). The steps the integrator takes by backward Euler are those after a
 solve left the cloth off balance (integrate.UNBALANCED), the ones in which that happens; on
-those, when no hand, wind or moving obstacle does work, a step that raised a piece's energy is
-solved once more, and a piece whose energy still rose gives the gain back from its motion: its
+those, when no wind or moving obstacle does work, a step that raised the energy of a piece no
+hand holds is solved once more, and a piece whose energy still rose gives the gain back from its motion: its
 vertices' velocities scaled by sqrt((KE - gain) / KE) (a piece nothing holds: their velocities
 relative to its centre of mass, so that its momentum, which the exact step keeps, stays). The
 positions the solve found stay. BDF2 steps (the cloth near balance) are left alone: their
@@ -62,21 +62,57 @@ def by_piece(cloth):
                                                pos[b + b + 1] - pos[a + a + 1])
 
 
+def motion(cloth):
+    """cloth.piece_motion[3 p], [3 p + 1..2]: each piece nothing holds's mass and momentum now
+    (0 for the others)."""
+    out = cloth.piece_motion
+    for t in range(3 * cloth.n_pieces):
+        out[t] = 0.0
+    vel = cloth.vel
+    for k in range(cloth.n_verts):
+        if cloth.falling[k] != 0:
+            p3 = 3 * cloth.piece[k]
+            m = cloth.mass[k]
+            out[p3] += m
+            out[p3 + 1] += m * vel[k + k]
+            out[p3 + 2] += m * vel[k + k + 1]
+
+
+def own_energy(cloth, p):
+    """The energy of piece p that the step's account holds it to (by_piece and motion measured
+    it): its whole energy, or for a piece nothing holds, its energy about its centre of mass,
+    kinetic (relative to the centre) and elastic: the centre's own motion is the exact step's
+    (vbd.keep_momentum)."""
+    e = cloth.piece_energy
+    p3 = 3 * p
+    m = cloth.piece_motion[p3]
+    if m > 0.0:
+        px = cloth.piece_motion[p3 + 1]
+        py = cloth.piece_motion[p3 + 2]
+        return e[p3] - 0.5 * (px * px + py * py) / m + e[p3 + 1]
+    return e[p3] + e[p3 + 1] + e[p3 + 2]
+
+
 def take_stock(cloth):
     """Before a step (its stage before the integrator's predict): each piece's energy, if the
     step is one whose gain no_gain takes back (the module's comment)."""
     cloth.stock = 0
-    if cloth.n_gripped > 0 or next_order(cloth) != 1:
+    if next_order(cloth) != 1:
         return
     if cloth.n_obstacles > 0 and not obstacles_still(cloth):
         return
     by_piece(cloth)
-    e = cloth.piece_energy
+    motion(cloth)
     before = cloth.energy_before
     touched = cloth.piece_touched
     for p in range(cloth.n_pieces):
-        before[p] = e[3 * p] + e[3 * p + 1] + e[3 * p + 2]
+        before[p] = own_energy(cloth, p)
         touched[p] = 0
+    # A piece a hand holds is driven (the hand does work): it is left alone, the others not (a
+    # piece torn free while a hand held another gained 5.5 J within five steps, its unfinished
+    # solves stretching it further each step).
+    for h in range(cloth.n_gripped):
+        touched[cloth.piece[cloth.gripped[h]]] = 1
     cloth.stock = 1
 
 
@@ -101,15 +137,29 @@ def gained(cloth):
     """Whether the step raised the energy of a piece no obstacle is near (contact.lag_friction
     marks those in piece_touched: outside an obstacle is not a convex set, and the module's
     argument says nothing of a piece that touches one), with each piece's energy now in
-    piece_energy."""
+    piece_energy and its motion in piece_motion. A piece nothing holds is held to more: the
+    exact step's still air takes c h sum m |v - v_centre|^2 of its energy about its centre
+    (the module's argument, about the centre), so it comes to rest relative to itself as a
+    cloth does in air (its solve left unfinished by a spin, a piece of seven vertices torn off
+    tissue kept 5 m/s about its centre for good, each step's gain given back to the bit)."""
     by_piece(cloth)
+    motion(cloth)
     touched = cloth.piece_touched
-    e = cloth.piece_energy
-    before = cloth.energy_before
     for p in range(cloth.n_pieces):
-        if touched[p] == 0 and e[3 * p] + e[3 * p + 1] + e[3 * p + 2] > before[p]:
+        if touched[p] == 0 and own_energy(cloth, p) > allowed(cloth, p):
             return True
     return False
+
+
+def allowed(cloth, p):
+    """The most energy piece p may have after the step (gained)."""
+    m = cloth.piece_motion[3 * p]
+    if m <= 0.0:
+        return cloth.energy_before[p]
+    px = cloth.piece_motion[3 * p + 1]
+    py = cloth.piece_motion[3 * p + 2]
+    inner = 2.0 * cloth.piece_energy[3 * p] - (px * px + py * py) / m
+    return cloth.energy_before[p] - cloth.damping * cloth.h_bdf * inner
 
 
 def give_back(cloth):
@@ -118,33 +168,23 @@ def give_back(cloth):
     whose momentum the exact step keeps (vbd.py keep_momentum), so its velocity P / M stays."""
     e = cloth.piece_energy
     scale = cloth.energy_before
-    motion = cloth.piece_motion
+    motion_ = cloth.piece_motion
     touched = cloth.piece_touched
     n = cloth.n_verts
     vel = cloth.vel
     piece = cloth.piece
-    mass = cloth.mass
     fixed = cloth.fixed
     falling = cloth.falling
-    for t in range(3 * cloth.n_pieces):
-        motion[t] = 0.0
-    for k in range(n):
-        if falling[k] != 0:
-            p3 = 3 * piece[k]
-            m = mass[k]
-            motion[p3] += m
-            motion[p3 + 1] += m * vel[k + k]
-            motion[p3 + 2] += m * vel[k + k + 1]
     for p in range(cloth.n_pieces):
         p3 = 3 * p
-        gain = e[p3] + e[p3 + 1] + e[p3 + 2] - scale[p]
+        gain = own_energy(cloth, p) - allowed(cloth, p)
         kinetic = e[p3]
-        if motion[p3] > 0.0:
-            px = motion[p3 + 1]
-            py = motion[p3 + 2]
-            kinetic -= 0.5 * (px * px + py * py) / motion[p3]
-            motion[p3 + 1] = px / motion[p3]
-            motion[p3 + 2] = py / motion[p3]
+        if motion_[p3] > 0.0:
+            px = motion_[p3 + 1]
+            py = motion_[p3 + 2]
+            kinetic -= 0.5 * (px * px + py * py) / motion_[p3]
+            motion_[p3 + 1] = px / motion_[p3]
+            motion_[p3 + 2] = py / motion_[p3]
         scale[p] = 1.0
         if gain > 0.0 and kinetic > 0.0 and touched[p] == 0:
             scale[p] = math.sqrt(max(kinetic - gain, 0.0) / kinetic)
@@ -158,7 +198,7 @@ def give_back(cloth):
         vx = 0.0
         vy = 0.0
         if falling[k] != 0:
-            vx = motion[3 * p + 1]
-            vy = motion[3 * p + 2]
+            vx = motion_[3 * p + 1]
+            vy = motion_[3 * p + 2]
         vel[k + k] = vx + s * (vel[k + k] - vx)
         vel[k + k + 1] = vy + s * (vel[k + k + 1] - vy)

@@ -1,4 +1,5 @@
-"""The fabrics a scene may be made of: each one's stretch stiffness, shear stiffness and density.
+"""The fabrics a scene may be made of: each one's stretch stiffness, shear stiffness, density and
+strength.
 
 A fabric is a membrane (cloth/topology.py): structural edges of stiffness `stretch` (N/m) and
 both diagonals of every cell of stiffness `shear` (N/m), each pulling only when longer than at
@@ -18,18 +19,30 @@ whose loops straighten before their yarn stretches: stretch 1e2-1e3 N/m, shear/s
 0.03-0.2; apparel weights 0.1-0.4 kg/m^2.
 """
 
-# [name, label, stretch N/m, shear N/m, density kg/m^2, what it is]
+# [name, label, stretch N/m, shear N/m, density kg/m^2, strength N/m, what it is]
+# Strength: the tension at which a line of yarns breaks (cloth/tear.py), from strip tests
+# (ISO 13934-1, ASTM D5035: the force per 50 mm of width at break; x 20 is N/m). Retailers'
+# minimums for woven apparel are 2.4-4.4 kN/m by weight (18 daN a 50 mm strip for a 120-200
+# g/m^2 shirting), denim's grab minimums reach 12-31 kN/m, a 190T polyester taffeta's yarns
+# carry about 7-11 kN/m; knits are tested by bursting, not strips (their numbers here are
+# orders of magnitude). No hand tears these: 20 N spread over 2 cm is at most 1 kN/m. The
+# tissue tears in a hand: a 2-ply facial tissue (32-50 g/m^2) breaks at 48-80 N/m across its
+# machine direction and 110-180 N/m along it, at 13-18% strain (US patent 11280050 B2's
+# tables), a secant stiffness of about 1 kN/m; paper is near isotropic in shear
+# (G = E / 2(1 + nu), nu ~ 0.3).
 FABRICS = [
-    ['cotton', 'Cotton (woven shirting)', 5000.0, 150.0, 0.15,
+    ['cotton', 'Cotton (woven shirting)', 5000.0, 150.0, 0.15, 4000.0,
      'a plain-woven cotton shirting: stiff along its yarns, a little give on the bias'],
-    ['denim', 'Denim (heavy twill)', 10000.0, 170.0, 0.4,
-     'a 12 oz cotton twill: the stiffest and heaviest here'],
-    ['polyester', 'Polyester (light woven)', 2000.0, 20.0, 0.1,
+    ['denim', 'Denim (heavy twill)', 10000.0, 170.0, 0.4, 15000.0,
+     'a 12 oz cotton twill: the stiffest, heaviest and strongest here'],
+    ['polyester', 'Polyester (light woven)', 2000.0, 20.0, 0.1, 5000.0,
      'a light plain-woven polyester lining: stiff in stretch, soft in shear'],
-    ['jersey', 'Jersey (cotton knit)', 500.0, 50.0, 0.2,
+    ['jersey', 'Jersey (cotton knit)', 500.0, 50.0, 0.2, 2000.0,
      'a single-knit cotton jersey, as in a T-shirt'],
-    ['spandex', 'Spandex (stretch knit)', 150.0, 30.0, 0.2,
+    ['spandex', 'Spandex (stretch knit)', 150.0, 30.0, 0.2, 1500.0,
      'a cotton-elastane knit: stretches under its own weight'],
+    ['tissue', 'Tissue (2-ply paper)', 1000.0, 380.0, 0.035, 60.0,
+     'a 2-ply facial tissue: light, stiff for its weight, and torn by a hand'],
 ]
 # Every fabric's edges are hemmed: folded over twice and sewn, HEM_LAYERS more layers of the
 # fabric over HEM_WIDTH along the border (a 1 cm double-fold hem). The hem is a line of finite
@@ -40,6 +53,11 @@ FABRICS = [
 # mean strain is the same at 30 and 60 and the woven fields differ 18-22% (2 cm clamps).
 HEM_LAYERS = 2.0
 HEM_WIDTH = 0.01
+# A fabric's strength (FABRICS, N/m) is the tension at which a line of its yarns breaks,
+# averaged over this length across them (m; cloth/tear.py): the coarsest grid a preset is
+# drawn at resolves it (Tearable, 2 m wide, at 10 columns: 0.22 m cells), so a tear starts at
+# the same pull on every grid (python -m bench --tear).
+TEAR_LENGTH = 0.2
 # The presets' fabric: its stretch under its own weight shows in the colours (a 1.5 m drop
 # strains jersey's top edge by density g height / stretch, 0.6%).
 DEFAULT_FABRIC = 'jersey'

@@ -50,6 +50,15 @@ HAND_STIFFNESS = HAND_FORCE / 0.005
 # solvers (measured: XPBD, a 2x1 cloth's vertex 0.4-1.25 m off after 10 s). Proportional to
 # the gripped mass, it adds at most 5 s^-1 x 0.03 kg x 5 m/s = 1 N to a fast flick's pull.
 HAND_DAMPING = 5.0
+# A hand moves what it holds at its own speed and catches up with it at most this much faster
+# (m/s). Beyond its reach the hand's pull is a constant HAND_FORCE, and held back by heavy cloth
+# its patch lags the pointer (the hand's intent) by as much as the pull cannot make up; when
+# the cloth behind it tears away, that pull on a patch of a few grams covers the whole lag in
+# one step: a tissue's corner torn off while a hand dragged it at 23 m/s flew at 51 m/s, where
+# a hand, which has a mass of its own, follows its pointer no faster than an arm moves (5 m/s:
+# what the releases' bench holds a cloth let go to, and a hand's quick move; a hand that takes
+# hold 0.3 m from its vertex has it in four frames).
+HAND_CATCH_UP = 5.0
 
 
 def check_vertex(cloth, k):
@@ -139,6 +148,68 @@ def toggle_pin(cloth, k):
         unpin(cloth, k)
     else:
         pin(cloth, k)
+
+
+def carry(cloth, k, x, y):
+    """A script's clamp: vertex k (pinned, if it was not) and the pins within CLAMP of it along
+    the cloth go rigidly, evenly over the next frame, so that k is at (x, y) at its end
+    (carry_pins). Kinematic: what a script fixes is where the script says, at every grid,
+    however the cloth pulls (carried by a hand of finite force, Two corners' right clamp ended
+    1-6.7 mm low and bent, and the denim field 26% off the statics of the scene as written).
+    A person's hand is a hand (grab)."""
+    check_vertex(cloth, k)
+    check_point(x, y)
+    if cloth.pinned[k] == 0:
+        pin(cloth, k)
+    # From where the clamp is going (a carry this frame already sent it) or where it is.
+    kk = k + k
+    fx = cloth.script_to[kk] if cloth.scripted[k] != 0 else cloth.pos[kk]
+    fy = cloth.script_to[kk + 1] if cloth.scripted[k] != 0 else cloth.pos[kk + 1]
+    dx = x - fx
+    dy = y - fy
+    found = walk_grip(cloth, k, CLAMP * (1.0 + 1e-9), cloth.grip_dist, cloth.grip_list)
+    for j in range(found):
+        v = cloth.grip_list[j]
+        if cloth.pinned[v] == 0 or cloth.fixed[v] == 0:
+            continue
+        vv = v + v
+        if cloth.scripted[v] == 0:
+            cloth.scripted[v] = 1
+            cloth.script_from[vv] = cloth.pos[vv]
+            cloth.script_from[vv + 1] = cloth.pos[vv + 1]
+            cloth.script_to[vv] = cloth.pos[vv]
+            cloth.script_to[vv + 1] = cloth.pos[vv + 1]
+        cloth.script_to[vv] += dx
+        cloth.script_to[vv + 1] += dy
+    cloth.n_scripted = 1
+    wake(cloth)
+
+
+def carry_pins(cloth):
+    """Before a step: each pin a script carries goes its share (cloth.share) of the way from
+    where it was at the frame's start to where it is going."""
+    if cloth.n_scripted == 0:
+        return
+    share = cloth.share
+    for v in range(cloth.n_verts):
+        if cloth.scripted[v] == 0 or cloth.fixed[v] == 0:
+            continue
+        vv = v + v
+        for t in range(2):
+            start = cloth.script_from[vv + t]
+            end = cloth.script_to[vv + t]
+            cloth.pos[vv + t] = end if share == 1.0 else start + (end - start) * share
+
+
+def pins_arrived(cloth):
+    """At a frame's end the carried pins are where they were going: the next frame starts
+    there, and a pin no script moves any more is left alone."""
+    if cloth.n_scripted == 0:
+        return
+    for v in range(cloth.n_verts):
+        if cloth.scripted[v] != 0:
+            cloth.scripted[v] = 0
+    cloth.n_scripted = 0
 
 
 def wake(cloth):
@@ -355,6 +426,64 @@ def guess_grip(cloth, k):
         i = v + v
         pos[i] += best * (cloth.prev[i] + mx - pos[i])
         pos[i + 1] += best * (cloth.prev[i + 1] + my - pos[i + 1])
+
+
+def keep_up(cloth, v, x, y, out):
+    """out[0..1]: where gripped vertex v may go toward (x, y) this step (its solver's move): no
+    farther from where it began the step (`prev`) than the hand moves in the step plus
+    HAND_CATCH_UP times the step. A hand's patch moves no faster than the hand, catching up at
+    most that much faster: a constraint of the step's minimisation (the disc of the places it
+    allows is convex)."""
+    k = cloth.grip[v]
+    kk = k + k
+    vv = v + v
+    f = cloth.h / cloth.dt
+    hx = (cloth.target[kk] - cloth.hand_from[kk]) * f
+    hy = (cloth.target[kk + 1] - cloth.hand_from[kk + 1]) * f
+    most = math.sqrt(hx * hx + hy * hy) + HAND_CATCH_UP * cloth.h
+    dx = x - cloth.prev[vv]
+    dy = y - cloth.prev[vv + 1]
+    d2 = dx * dx + dy * dy
+    if d2 > most * most:
+        s = most / math.sqrt(d2)
+        x = cloth.prev[vv] + dx * s
+        y = cloth.prev[vv + 1] + dy * s
+    out[0] = x
+    out[1] = y
+
+
+def catch_up_limit(cloth, d, top):
+    """The largest alpha, at most `top`, for which every gripped vertex at pos + alpha d keeps to
+    keep_up's disc (or, already outside it, comes no farther out): the coarse correction's
+    limit, so that what a hand's patch may not do a sweep's step, a correction does not either
+    (taking a torn tissue's strands the whole way to a hand 1 m off, it flung them at 77 m/s)."""
+    f = cloth.h / cloth.dt
+    for h in range(cloth.n_gripped):
+        v = cloth.gripped[h]
+        if cloth.fixed[v] != 0:
+            continue
+        k = cloth.grip[v]
+        kk = k + k
+        vv = v + v
+        hx = (cloth.target[kk] - cloth.hand_from[kk]) * f
+        hy = (cloth.target[kk + 1] - cloth.hand_from[kk + 1]) * f
+        most = math.sqrt(hx * hx + hy * hy) + HAND_CATCH_UP * cloth.h
+        px = cloth.pos[vv] - cloth.prev[vv]
+        py = cloth.pos[vv + 1] - cloth.prev[vv + 1]
+        dx = d[vv]
+        dy = d[vv + 1]
+        # |p + a d|^2 <= R^2: a^2 dd + 2 a pd + pp - R^2 <= 0
+        dd = dx * dx + dy * dy
+        if dd == 0.0:
+            continue
+        pd = px * dx + py * dy
+        pp = px * px + py * py
+        r2 = most * most if pp <= most * most else pp
+        disc = pd * pd - dd * (pp - r2)
+        a = (-pd + math.sqrt(disc if disc > 0.0 else 0.0)) / dd
+        if a < top:
+            top = a
+    return top
 
 
 def hands_arrived(cloth):

@@ -17,6 +17,7 @@ v = (x' - x) / h + a h / 2.
 import math
 
 from cloth.obstacles import project
+from cloth import air
 
 # Its own Verlet, not cloth/integrate.py's steps.
 ORDER = 0
@@ -91,6 +92,8 @@ def solve(cloth):
             pos[ia + 1] += dy * sa
             pos[ib] -= dx * sb
             pos[ib + 1] -= dy * sb
+        if cloth.windy:
+            air.project(cloth)
         if cloth.n_obstacles > 0:
             project(cloth)
         cloth.sweeps += 1

@@ -3,7 +3,7 @@ the page's fields, captions and compare editor take their label, unit and range 
 The settings know nothing of the physics: the solvers' code registers against the names here
 (cloth/solvers.py), not the other way round."""
 
-from cloth.fabrics import fabric, DEFAULT_FABRIC
+from cloth.fabrics import fabric, DEFAULT_FABRIC, TEAR_LENGTH
 
 # The solvers a scene may name, with their label and their own budget: substeps, iterations
 # (sweeps a step) and coarse-grid corrections a step (only the default has any). Each one's
@@ -34,6 +34,7 @@ MIN_DT = 1e-6
 # A scene nests 4 deep (scene, actions, an action, its `to`); deeper is not a scene.
 MAX_DEPTH = 32
 MAX_TEAR = 1e6
+MAX_STRENGTH = 1e7
 MAX_PANELS = 4
 # Obstacles: at most this many (each is a test per vertex per step), within OBSTACLE_FAR of
 # the origin and at most OBSTACLE_SIZE across (metres). Shapes by index: OBSTACLE_SHAPES[i].
@@ -41,7 +42,7 @@ MAX_OBSTACLES = 16
 OBSTACLE_FAR = 1e6
 OBSTACLE_SIZE = 1e4
 OBSTACLE_SHAPES = ['circle', 'box']
-OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut', 'obstacle']
+OPS = ['grab', 'move', 'release', 'pin', 'unpin', 'set', 'cut', 'obstacle', 'carry']
 # Every scene that comes in (a link, a file opened or dropped, the Scene JSON box, the CLI) is
 # refused past this many bytes of UTF-8 JSON, counted while it is read or inflated, before
 # anything is parsed: the largest recording the page makes (MAX_ACTIONS actions) is about
@@ -74,8 +75,8 @@ SCENE_FIELDS = [
      '(with the scene\'s drag)', 0, ['wind_x', 'wind_y']],
     ['gust', 'how far gusts swing the wind: 0.5 is \u00b150% at their peaks (the scene\'s gust '
      'period, 1 s unless it says)', 0, ['gust_amplitude', 'gust_period']],
-    ['tear', 'an edge breaks once its strain (length \u2212 rest) / rest passes this (a tension of '
-     'the fabric\'s stretch stiffness times it); empty: no tearing', 0, []],
+    ['strength', 'the fabric tears where its tension (N/m), averaged over ' + str(TEAR_LENGTH) +
+     ' m across its yarns, passes this; empty: it does not tear', 0, []],
 ]
 
 
@@ -154,11 +155,19 @@ KEYS = [
         'an integer from 0 to 10000000 (the frames the scene was recorded for)', 'Frames', '',
         False, 0, -1, None, 0, 0, 0),
     Key('compare', 'compare', 0, 0, False, '', 'Compare', '', False, 0, None, None, 0, 0, 0),
-    # The strain past which an edge breaks; null or omitted: no tearing (0 in a Scene). The
-    # page's field takes empty, `off` or 0 for none.
+    # The fabric's strength: the tension (N/m) at which its yarns break (cloth/tear.py); null
+    # or omitted: it does not tear (0 in a Scene). The page's field takes empty, `off` or 0
+    # for none.
+    Key('strength', 'number', 0.0, MAX_STRENGTH, True,
+        'a tension greater than 0 N/m (the fabric tears where its tension, averaged over ' +
+        str(TEAR_LENGTH) + ' m across its yarns, passes it), or null for a cloth that does not '
+        'tear', 'Strength', 'N/m', True, 1, 0.0, None, 1, 1e6, 1),
+    # A scene made before `strength` gave the strain its springs broke at: read as the strength
+    # of the stretch stiffness times it (ALIASES).
     Key('tear', 'number', 0.0, MAX_TEAR, True,
-        'a strain greater than 0 (an edge breaks once (length - rest) / rest exceeds it), or '
-        'null for no tearing', 'Tear', 'strain', True, 1, 0.0, None, 0.01, 100, 0.01),
+        'a strain greater than 0 (the strength of the stretch stiffness times it, where the scene '
+        'gives no strength), or null for no tearing', 'Tear', 'strain', True, 0, 0.0, None,
+        0.01, 100, 0.01),
     # The air: its velocity (m/s) and how hard it pushes on the cloth across an edge (drag:
     # N s/m^3, per area and m/s of air across it, so the same on every grid). Gusts scale the
     # wind by 1 + amplitude * a smooth periodic wave of the period.
@@ -206,6 +215,9 @@ NOT_SETTINGS = ['actions', 'pins', 'frames', 'name', 'compare', 'obstacles']
 # `compare`: 2 to MAX_PANELS panels that run the scene side by side under the same hands, each
 # with some of these keys of its own.
 COMPARE_KEYS = keys_where('panel')
+# Keys an older scene may still give in place of another (their Key says how each is read):
+# accepted wherever that one is.
+ALIASES = [['tear', 'strength']]
 
 
 def solver_index(name):

@@ -454,6 +454,29 @@ def inside_obstacles(cloth):
     return count
 
 
+def edges_through(cloth):
+    """How many edges of the cloth meet an obstacle (inside it, or touching it): 0 for a scene
+    that started clear, at every frame (ccd.py); the tests' and the benchmark's check."""
+    count = 0
+    if cloth.n_obstacles == 0:
+        return count
+    geo = cloth.geo
+    at = cloth.obstacle_at
+    half = cloth.obstacle_half
+    pos = cloth.pos
+    for e in range(cloth.n_edges):
+        a = cloth.edge_a[e] + cloth.edge_a[e]
+        b = cloth.edge_b[e] + cloth.edge_b[e]
+        for o in range(cloth.n_obstacles):
+            oo = o + o
+            distance(cloth.obstacle_shape[o], at[oo], at[oo + 1], half[oo], half[oo + 1],
+                     pos[a], pos[a + 1], pos[b], pos[b + 1], geo)
+            if geo[0] <= 0.0:
+                count += 1
+                break
+    return count
+
+
 def obstacle_under(cloth, x, y):
     """The index of the obstacle whose shape, where it is going (`to`), holds (x, y); the last
     one drawn (the highest index) first; -1 for none."""

@@ -14,7 +14,7 @@ import math
 from cloth.host import too_deep, parse_json, kind_of, has_key, key_list, copy_object
 from cloth.keys import MAX_VERTICES, MAX_SCENE_BYTES, MAX_DEPTH, MAX_PANELS, MAX_OBSTACLES, \
     OBSTACLE_FAR, OBSTACLE_SIZE, SCENE_KEYS, SETTABLE, NOT_SETTINGS, COMPARE_KEYS, MODEL, \
-    LEGACY_KEYS, spec, solver_index
+    LEGACY_KEYS, ALIASES, spec, solver_index
 from cloth.keys import SOLVERS, SOLVER_BUDGETS, DEFAULT_SOLVER, SEED_SOLVER
 from cloth.values import SceneError, fail, shown, number, integer, boolean, known
 from cloth.actions import parse_actions
@@ -43,7 +43,7 @@ class Scene:
         self.shear = spec('shear').fallback         # N/m
         self.density = spec('density').fallback     # kg/m^2
         self.sleep = spec('sleep').fallback
-        self.tear = spec('tear').fallback           # the strain past which an edge breaks; 0: none
+        self.strength = spec('strength').fallback   # N/m: where the fabric tears; 0: never
         wind = spec('wind').fallback
         self.wind_x = wind[0]
         self.wind_y = wind[1]
@@ -152,6 +152,14 @@ def parse_scene(text, panel=-1):
     return own
 
 
+def alias(key):
+    """Whether `key` is one an older scene may give in place of another (keys.ALIASES)."""
+    for i in range(len(ALIASES)):
+        if ALIASES[i][0] == key:
+            return True
+    return False
+
+
 def parse_compare(compare, obj):
     """Check `compare`: 2 to MAX_PANELS objects of COMPARE_KEYS, each a valid scene when written
     into this one."""
@@ -164,7 +172,7 @@ def parse_compare(compare, obj):
             fail(where + ': must be an object of scene keys (' + ', '.join(COMPARE_KEYS) + ')')
         names = key_list(entry)
         for j in range(len(names)):
-            if not known(COMPARE_KEYS, names[j]):
+            if not known(COMPARE_KEYS, names[j]) and not alias(names[j]):
                 fail(where + '.' + shown(names[j]) + ': not a key a panel can have (' +
                      ', '.join(COMPARE_KEYS) + ')')
         try:
@@ -241,7 +249,10 @@ def scene_from_object(obj):
         fail('density: density * spacing^2 (a vertex\'s mass) must be at least 1e-12 kg')
     if has_key(obj, 'name') and kind_of(obj['name']) != 'string':
         fail('name: must be a string')
-    s.tear = read(obj, 'tear', s.tear)
+    s.strength = read(obj, 'strength', s.strength)
+    tear = read(obj, 'tear', 0.0)
+    if tear > 0.0 and not (has_key(obj, 'strength') and obj['strength'] is not None):
+        s.strength = s.stretch * tear
     s.frames = read(obj, 'frames', s.frames)
     if has_key(obj, 'wind'):
         w = pair(obj, 'wind', '[wx, wy] in m/s')

@@ -2,7 +2,7 @@
 on a running cloth. The CLI's run, the page's panels and its session all go through these."""
 
 from cloth.scene import settings_scene
-from cloth.hands import grab, move, move_by, release, pin, unpin
+from cloth.hands import grab, move, move_by, release, pin, unpin, carry
 from cloth.step import retune, cut
 from cloth.obstacles import move_obstacle
 
@@ -42,6 +42,8 @@ def apply_action(cloth, action):
         cut(cloth, action.from_x, action.from_y, action.to_x, action.to_y)
     elif op == 'obstacle':
         move_obstacle(cloth, action.vertex, action.to_x, action.to_y)
+    elif op == 'carry':
+        carry(cloth, k, action.to_x, action.to_y)
 
 
 def apply_due(cloth, next_action, f):

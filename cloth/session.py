@@ -45,6 +45,7 @@ UNPIN = code_of('unpin')
 SET = code_of('set')              # the settings are sets[vertex]
 CUT = code_of('cut')              # a blade from (from_x, from_y) to (x, y)
 OBSTACLE = code_of('obstacle')    # obstacle `vertex` (its index) sent to (x, y)
+CARRY = code_of('carry')          # a script's clamp sent to (x, y) (a person's hand never carries)
 GRAB_HERE = len(OPS)              # compare mode: every panel holds its own vertex where it is
 MOVE_BY = len(OPS) + 1            # compare mode: every hand moves by (x, y) from where it took hold
 FIRST_CAPACITY = 1024
@@ -176,8 +177,8 @@ def recorded(rec, i):
         return {'frame': f, 'op': 'move', 'vertex': k, 'by': [rec.x_of[i], rec.y_of[i]]}
     if op == GRAB:
         return {'frame': f, 'op': 'grab', 'vertex': k, 'to': [rec.x_of[i], rec.y_of[i]]}
-    if op == MOVE:
-        return {'frame': f, 'op': 'move', 'vertex': k, 'to': [rec.x_of[i], rec.y_of[i]]}
+    if op == MOVE or op == CARRY:
+        return {'frame': f, 'op': OPS[op], 'vertex': k, 'to': [rec.x_of[i], rec.y_of[i]]}
     return {'frame': f, 'op': OPS[op], 'vertex': k}
 
 

@@ -61,7 +61,7 @@ class Cloth:
         self.piece_held = i32(n)
         self.was_falling = i32(n)     # `falling` before a cut (step.broke)
         self.n_pieces = 0
-        self.piece_sum = f64(3 * n)   # per piece: mass, and its mass-weighted offset (vbd)
+        self.piece_sum = f64(6 * n)   # per piece: inertia weight, offset, air (vbd.keep_momentum)
         self.piece_energy = f64(3 * n)  # per piece: kinetic, elastic, gravitational (energy.py)
         self.energy_before = f64(n)   # per piece: its energy before a step (energy.take_stock)
         self.stock = 0                # 1 when it was taken for this step
@@ -88,6 +88,10 @@ class Cloth:
         self.grip_w = 1.0         # a gripped vertex's inertia weight factor (hands.hold)
         self.gripped = i32(n)     # the vertices some hand grips
         self.n_gripped = 0
+        self.scripted = i32(n)    # 1: a pin a script carries this frame (hands.carry)
+        self.n_scripted = 0
+        self.script_from = f64(2 * n)
+        self.script_to = f64(2 * n)
         self.grip_dist = f64(n)   # work arrays of a grip's walk
         self.grip_list = i32(n)
         for k in range(n):
@@ -125,8 +129,10 @@ class Cloth:
         self.still_frames = 0
         self.last_pos = f64(0)
         self.still_from = f64(0)
-        # the air's clock (cloth/air.py)
+        # the air (cloth/air.py): whether it moves, its clock, its term's arrays
+        self.windy = False
         self.air_t = 0.0
+        self.air_k = f64(0)
         # obstacles (cloth/obstacles.py): each one's shape, half width and height, friction,
         # and centre: where it is (`at`), where it was when the step began (`was`), where the
         # frame began (`from`), and where an `obstacle` action sends it by the end of the
@@ -146,6 +152,8 @@ class Cloth:
         self.obstacle_bounds = f64(4 * m)  # its box, grown by the contact's reach
         # the contact's arrays (contact.prepare, for a scene with obstacles)
         self.guess = f64(0)
+        self.strength = 0.0       # N/m: the fabric's, where it tears (0: never; cloth/tear.py)
+        self.tear_t = f64(0)
         self.ring = f64(0)
         self.g_ref = 9.81         # the weight's scale per kg: |g|, at least 1 g (hands.refix)
         self.kappa = 0.0          # the contact's barrier's stiffness (step.configure)

@@ -1,12 +1,13 @@
 """A frame of the cloth: its stages, chosen once when the scene is configured.
 
-    frame:  the air (if it moves)
-            then `substeps` steps of dt / substeps, each:
-                aim the hands  ->  move the obstacles (if any)  ->  predict
-                ->  the grips' damping and first guess (the implicit solvers)  ->  solve
-                ->  push out of obstacles (if any)  ->  finish (velocities)
-                ->  tear (if the scene tears)
-            then: hands and obstacles arrive where they were going, and sleep (if on)
+    frame:  `substeps` steps of dt / substeps, each:
+                aim the hands  ->  where the obstacles go (if any)  ->  take stock of the energy
+                ->  predict  ->  the grips' damping and first guess (the implicit solvers)
+                ->  the air's drag for the step (if it moves)  ->  the solve's start clear of
+                the obstacles, which push what they meet (if any)  ->  solve  ->  finish
+                (velocities)  ->  give back what the step gained  ->  tear (if it tears)
+            then: hands and obstacles arrive where they were going, the air's clock moves on,
+            and sleep (if on)
 
 The solver (cloth/solvers.py) supplies predict, solve and finish: the integrator and the
 minimisation of the step's energy. Everything a stage needs is decided in `configure` (which
@@ -16,7 +17,6 @@ Operations are module functions taking the cloth, not methods: a Transcrypt meth
 a fresh closure on every call, and the hot path must not allocate.
 """
 
-from cloth.host import f64
 from cloth.fabrics import HEM_LAYERS, HEM_WIDTH
 from cloth.values import SceneError
 from cloth.keys import solver_index, SEED_SOLVER
@@ -32,6 +32,7 @@ from cloth import contact
 from cloth.ccd import CONTACT_GAP
 from cloth import air
 from cloth import sleep
+from cloth import tear as tearing
 
 
 def new_cloth(scene):
@@ -40,7 +41,6 @@ def new_cloth(scene):
     topology.build(cloth, scene.stretch, scene.shear)
     set_masses(cloth, scene.density)
     measure.prepare(cloth)
-    cloth.tear_limit = f64(1)
     configure(cloth, scene)
     for k in range(cloth.n_verts):
         integrate.rest_at(cloth, k)
@@ -77,7 +77,7 @@ def configure(cloth, scene):
     cloth.gravity_y = scene.gravity_y
     cloth.solver = solver_index(scene.solver)
     cloth.seed = scene.solver == SEED_SOLVER
-    cloth.tear_limit[0] = (1.0 + scene.tear) * (1.0 + scene.tear)
+    cloth.strength = scene.strength
     cloth.kappa = scene.stretch * CONTACT_GAP / 14.0
     solver = REGISTRY[cloth.solver]
     cloth.max_order = solver[1].ORDER
@@ -88,9 +88,16 @@ def configure(cloth, scene):
     contact.prepare(cloth)
     cloth.frame_stages = []
     windy = scene.drag > 0.0 and (scene.wind_x != 0.0 or scene.wind_y != 0.0)
+    cloth.windy = windy
     if windy:
-        cloth.frame_stages.append(air.feel_air)
+        air.prepare(cloth)
     cloth.stages = [hands.aim_hands]
+    carries = False
+    for i in range(len(scene.actions)):
+        if scene.actions[i].op == 'carry':
+            carries = True
+    if carries:
+        cloth.stages.append(hands.carry_pins)
     touching = cloth.n_obstacles > 0
     if touching:
         cloth.stages.append(obstacles.advance)
@@ -102,6 +109,8 @@ def configure(cloth, scene):
     cloth.stages.append(solver[2])
     if solver[2] == integrate.predict:
         cloth.stages.append(hands.hold)
+    if windy:
+        cloth.stages.append(air.begin)
     if touching:
         cloth.stages.append(obstacles.begin)
     solving = [solver[3]]
@@ -115,9 +124,14 @@ def configure(cloth, scene):
     if no_gain:
         cloth.again_stages = solving
         cloth.stages.append(energy.no_gain)
-    if scene.tear > 0.0:
+    if scene.strength > 0.0:
+        tearing.prepare(cloth)
         cloth.stages.append(tear)
     cloth.after_stages = [hands.hands_arrived]
+    if carries:
+        cloth.after_stages.append(hands.pins_arrived)
+    if windy:
+        cloth.after_stages.append(air.frame_passed)
     if cloth.n_obstacles > 0:
         cloth.after_stages.append(obstacles.obstacles_arrived)
     if scene.sleep:
@@ -149,10 +163,9 @@ def frame(cloth):
 
 
 def tear(cloth):
-    """Every edge strained past the scene's `tear` breaks, each step (a tear runs as fast as
-    the fabric hands its load on to the next edge, not at a rate of edges a frame)."""
-    if topology.mark_strained(cloth.pos, cloth.edge_a, cloth.edge_b, cloth.rest, cloth.n_edges,
-                              cloth.tear_limit) > 0:
+    """What passes the fabric's strength breaks (cloth/tear.py), each step (a tear runs as fast
+    as the fabric hands its load on to the next yarns, not at a rate of edges a frame)."""
+    if tearing.mark(cloth) > 0:
         broke(cloth)
 
 

@@ -4,6 +4,8 @@ A step (cloth/integrate.py) moves the free vertices to the minimum of
     G(x) = sum_i w_i / 2 |x_i - pred_i|^2          inertia (w_i = m_i (1 + c h') / h'^2)
          + sum_e k_e / 2 (L_e - L0_e)_+^2           the fabric's springs, tension only
          + sum_hands H(x)                           the hands' capped pulls
+         + the air's drag                           cloth/air.py (where the air moves)
+         + the contact's barrier and friction      cloth/contact.py (where there are obstacles)
 and the solvers (cloth/vbd.py, cloth/coarse.py, cloth/xpbd.py) are minimisers over it. Every
 term is convex: (L - L0)_+^2 / 2 is half the squared distance of the edge vector to the disc
 of radius L0, and a hand's pull is a pseudo-Huber function. So the step has one answer.
@@ -27,6 +29,7 @@ from math import sqrt
 
 from cloth.multigrid import DIAG
 from cloth import contact
+from cloth import air
 
 
 def inertia_weight(cloth, i):
@@ -117,9 +120,10 @@ def hand_energy(f, r, d2):
 
 def vertex(cloth, i, soft, acc):
     """acc[0..4]: the force on vertex i and its 2x2 block, summed over the terms that hold i
-    where the cloth is now: its inertia, its springs (each with its axial stiffness when slack)
-    and its hand, if one grips it (`soft`: see hand). acc[5] = 1 when the hand's block is the
-    soft one."""
+    where the cloth is now: its inertia, its springs (each with its axial stiffness when slack),
+    its hand, if one grips it (`soft`: see hand), and the air, if it moves (cloth/air.py); the
+    contact's are added where an obstacle is near (cloth/contact.py). acc[5] = 1 when the
+    hand's block is the soft one."""
     pos = cloth.pos
     ii = i + i
     xi = pos[ii]
@@ -157,6 +161,8 @@ def vertex(cloth, i, soft, acc):
     acc[2] = hxx
     acc[3] = hxy
     acc[4] = hyy
+    if cloth.windy:
+        air.vertex_terms(cloth, i, xi, yi, acc)
 
 
 def assemble(cloth, g, A):
@@ -217,6 +223,8 @@ def assemble(cloth, g, A):
         A[o] += t[2]
         A[o + 1] += t[3]
         A[o + 2] += t[4]
+    if cloth.windy:
+        air.assemble(cloth, g, A, couple)
     if cloth.n_obstacles > 0:
         contact.assemble(cloth, g, A)
     for i in range(n):
@@ -277,6 +285,8 @@ def energy_along(cloth, d):
         dx = pos[ii] + alpha * d[ii] - cloth.aim[ii]
         dy = pos[ii + 1] + alpha * d[ii + 1] - cloth.aim[ii + 1]
         s += hand_energy(cloth.grip_f[i], cloth.grip_f[i] / cloth.grip_k[i], dx * dx + dy * dy)
+    if cloth.windy:
+        s += air.energy_along(cloth, d)
     if cloth.n_obstacles > 0:
         contact.energy_along(cloth, d)
         s += cloth.sum[1]
@@ -300,6 +310,8 @@ def vertex_energy(cloth, i, x, y):
         dx = x - cloth.aim[ii]
         dy = y - cloth.aim[ii + 1]
         s += hand_energy(cloth.grip_f[i], cloth.grip_f[i] / cloth.grip_k[i], dx * dx + dy * dy)
+    if cloth.windy:
+        s += air.vertex_energy(cloth, i, x, y)
     if cloth.n_obstacles > 0:
         contact.vertex_energy(cloth, i, x, y)
         s += cloth.sum[0]

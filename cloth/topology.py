@@ -188,23 +188,6 @@ def mark_crossed(pos, edge_a, edge_b, rest, m, px, py, qx, qy):
     return count
 
 
-def mark_strained(pos, edge_a, edge_b, rest, m, limit):
-    """Mark (rest = -1) every edge whose strain passes the tear limit: (L / rest)^2 > limit[0]
-    = (1 + tear)^2, no square root. Returns how many."""
-    limit2 = limit[0]
-    found = 0
-    for e in range(m):
-        ia = edge_a[e] + edge_a[e]
-        ib = edge_b[e] + edge_b[e]
-        dx = pos[ib] - pos[ia]
-        dy = pos[ib + 1] - pos[ia + 1]
-        r = rest[e]
-        if dx * dx + dy * dy > limit2 * r * r:
-            rest[e] = -1.0
-            found += 1
-    return found
-
-
 def remove_marked(cloth):
     """Remove the edges marked broken (rest < 0), keeping the others in their order (the
     structural ones first), and rebuild the adjacency. Returns how many went."""

@@ -34,7 +34,9 @@ from cloth.multigrid import hierarchy
 from cloth.coarse import correct
 from cloth.contact import vertex_terms
 from cloth.ccd import HALVINGS, ring_near, path_clear, margin_of, move_clear
-from cloth.terms import vertex, vertex_energy
+from cloth.terms import vertex, vertex_energy, inertia_weight
+from cloth.hands import keep_up
+from cloth import air
 
 # Its steps are BDF2 (cloth/integrate.py), backward Euler after one left off balance.
 ORDER = 2
@@ -133,52 +135,69 @@ def solve(cloth):
 
 
 def keep_momentum(cloth):
-    """Every piece nothing holds (no pin, no hand, no obstacle: only its own springs act
-    on it) is moved as a whole so that its centre of mass is where the step's inertia puts it.
-    At G's minimum sum_i w_i (x_i - pred_i) is the sum of the springs' forces, which cancel in
-    pairs: the exact step keeps a free piece's momentum. An unfinished solve does not (the
-    sweeps' order and the coarse correction, which interpolates across a cut, move the centre:
-    a free jittered 10x10 drifted 0.3 m in 4 s, a piece cut off fell 2 cm behind free fall in
-    a second); the shift restores it and leaves the piece's shape, and its springs' energy,
-    as the solve left them."""
+    """Every piece nothing holds (no pin, no hand, no obstacle: only its own springs and the air
+    act on it) is moved as a whole so that its momentum changes by what the air gives it, as the
+    exact step's does. At G's minimum sum_i w_i (x_i - pred_i) is the sum of the forces, and
+    the springs' cancel in pairs: what is left is the air's, F(x). An unfinished solve leaves
+    it otherwise (the sweeps' order and the coarse correction, which interpolates across a cut,
+    move the centre: a free jittered 10x10 drifted 0.3 m in 4 s, a piece cut off fell 2 cm
+    behind free fall in a second; and a vertex moved alone stretches one spring as it slacks
+    another, so the sweeps carry a piece along with the air 60 times too slowly). The shift
+    delta that restores it solves (sum w_i) delta + K delta = sum w_i (pred_i - x_i) + F(x),
+    K = sum_e k_e n_e n_e^T the air's stiffness to a shift (cloth/air.py); it leaves the
+    piece's shape, and its springs' energy, as the solve left them."""
     pos = cloth.pos
     pred = cloth.pred
-    mass = cloth.mass
     falling = cloth.falling
     piece = cloth.piece
     acc = cloth.piece_sum
     n = cloth.n_verts
-    for t in range(3 * cloth.n_pieces):
+    for t in range(6 * cloth.n_pieces):
         acc[t] = 0.0
     any_free = False
     for k in range(n):
         if falling[k] == 0:
             continue
         any_free = True
-        p3 = 3 * piece[k]
-        m = mass[k]
-        acc[p3] += m
-        acc[p3 + 1] += m * (pred[k + k] - pos[k + k])
-        acc[p3 + 2] += m * (pred[k + k + 1] - pos[k + k + 1])
+        p6 = 6 * piece[k]
+        w = inertia_weight(cloth, k)
+        acc[p6] += w
+        acc[p6 + 1] += w * (pred[k + k] - pos[k + k])
+        acc[p6 + 2] += w * (pred[k + k + 1] - pos[k + k + 1])
     if not any_free:
         return
+    if cloth.windy:
+        air.piece_push(cloth, acc)
+    for p in range(cloth.n_pieces):
+        p6 = 6 * p
+        hxx = acc[p6] + acc[p6 + 3]
+        hxy = acc[p6 + 4]
+        hyy = acc[p6] + acc[p6 + 5]
+        det = hxx * hyy - hxy * hxy
+        if det > 0.0:
+            dx = (hyy * acc[p6 + 1] - hxy * acc[p6 + 2]) / det
+            dy = (hxx * acc[p6 + 2] - hxy * acc[p6 + 1]) / det
+            acc[p6 + 1] = dx
+            acc[p6 + 2] = dy
     for k in range(n):
         if falling[k] == 0:
             continue
-        p3 = 3 * piece[k]
-        pos[k + k] += acc[p3 + 1] / acc[p3]
-        pos[k + k + 1] += acc[p3 + 2] / acc[p3]
+        p6 = 6 * piece[k]
+        pos[k + k] += acc[p6 + 1]
+        pos[k + k + 1] += acc[p6 + 2]
 
 
 def let_fall(cloth):
     """Every free vertex that no spring pulls, with room to spare (each of its springs shorter
-    than its rest length by more than the vertex's way to its inertial target, here and
-    there), goes to that target: its exact local minimum. The sweeps, whose Hessian takes every
-    spring's axial stiffness, move such a vertex only w / (w + k) of the way: a curtain's hem
-    lifted 0.8 m and let go fell 0.1 m in its first 0.25 s (0.24 m with this; free fall 0.31 m).
-    The room to spare keeps a stiff cloth's vertices near their springs' rest lengths, which
-    noise makes slack now and taut next, where they are: let go there, each falls a step,
-    its spring snaps it back, and a cotton hang never settled."""
+    than its rest length by more than the vertex's way to its target, here and there), goes to
+    its target: its exact local minimum, where its inertia (and the air, which moves) alone
+    hold it: `pred`, or in a wind one Newton step on those quadratic terms from there. The
+    sweeps, whose Hessian takes every spring's axial stiffness, move such a vertex only
+    w / (w + k) of the way: a curtain's hem lifted 0.8 m and let go fell 0.1 m in its first
+    0.25 s (0.24 m with this; free fall 0.31 m). The room to spare keeps a stiff cloth's
+    vertices near their springs' rest lengths, which noise makes slack now and taut next, where
+    they are: let go there, each falls a step, its spring snaps it back, and a cotton hang
+    never settled. (Near an obstacle the target is not its minimum: the barrier is in G.)"""
     pos = cloth.pos
     pred = cloth.pred
     start = cloth.adj_start
@@ -187,6 +206,7 @@ def let_fall(cloth):
     fixed = cloth.fixed
     grip = cloth.grip
     contact = cloth.n_obstacles > 0
+    acc = cloth.acc
     for i in range(cloth.n_verts):
         if fixed[i] != 0 or grip[i] >= 0:
             continue
@@ -195,6 +215,17 @@ def let_fall(cloth):
         yi = pos[ii + 1]
         px = pred[ii]
         py = pred[ii + 1]
+        if cloth.windy:
+            w = inertia_weight(cloth, i)
+            acc[0] = 0.0
+            acc[1] = 0.0
+            acc[2] = w
+            acc[3] = 0.0
+            acc[4] = w
+            air.vertex_terms(cloth, i, px, py, acc)
+            det = acc[2] * acc[4] - acc[3] * acc[3]
+            px += (acc[4] * acc[0] - acc[3] * acc[1]) / det
+            py += (acc[2] * acc[1] - acc[3] * acc[0]) / det
         jump = math.sqrt((px - xi) * (px - xi) + (py - yi) * (py - yi))
         free = True
         for q in range(start[i], start[i + 1]):
@@ -212,7 +243,6 @@ def let_fall(cloth):
                 free = False
                 break
         if free and not (contact and ring_near(cloth, i, px, py)):
-            # (Near an obstacle the target is not its minimum: the barrier is in G.)
             pos[ii] = px
             pos[ii + 1] = py
 
@@ -310,6 +340,10 @@ def relax(cloth, forward, last, verts, n):
                     mx *= short
                     my *= short
                     stopped = True
+            if grip[i] >= 0:
+                keep_up(cloth, i, xi + mx, yi + my, cloth.term)
+                mx = cloth.term[0] - xi
+                my = cloth.term[1] - yi
             if contact:
                 descend(cloth, i, xi, yi, mx, my)
             else:

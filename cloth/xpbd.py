@@ -12,6 +12,8 @@ import math
 
 from cloth.host import f64
 from cloth.obstacles import project
+from cloth.hands import keep_up
+from cloth import air
 
 # Its steps are position Verlet's, as XPBD's are (cloth/integrate.py, order 0): with one sweep
 # a substep its solve is never finished, and BDF2, which damps what a step leaves unfinished
@@ -99,8 +101,11 @@ def solve(cloth):
                 dl = lo - cloth.hand_lam[i]
             cloth.hand_lam[i] += dl
             s = dl / d * w
-            pos[ii] += dx * s
-            pos[ii + 1] += dy * s
+            keep_up(cloth, i, pos[ii] + dx * s, pos[ii + 1] + dy * s, cloth.term)
+            pos[ii] = cloth.term[0]
+            pos[ii + 1] = cloth.term[1]
+        if cloth.windy:
+            air.project(cloth)
         if contact:
             project(cloth)
         cloth.sweeps += 1

@@ -12,32 +12,14 @@ import pytest
 
 from cloth.api import load
 from cloth.ccd import CONTACT_GAP
-from cloth.geometry import distance
 from cloth.hands import grab, move, release, HAND_FORCE
-from cloth.obstacles import move_obstacle
+from cloth.obstacles import move_obstacle, edges_through
 from cloth.presets import preset_scene
 from cloth.session import open_session, gesture_grab, gesture_move, gesture_release, advance
 from cloth.step import frame
 from helpers import scene
 
 SOLVERS = ['vbd', 'xpbd', 'jakobsen']
-
-
-def edges_through(cl):
-    """How many edges of the cloth meet an obstacle's interior (or touch it)."""
-    t = [0.0] * 4
-    count = 0
-    for e in range(cl.n_edges):
-        a = cl.edge_a[e]
-        b = cl.edge_b[e]
-        for o in range(cl.n_obstacles):
-            distance(cl.obstacle_shape[o], cl.obstacle_at[2 * o], cl.obstacle_at[2 * o + 1],
-                     cl.obstacle_half[2 * o], cl.obstacle_half[2 * o + 1], cl.pos[2 * a],
-                     cl.pos[2 * a + 1], cl.pos[2 * b], cl.pos[2 * b + 1], t)
-            if t[0] <= 0.0:
-                count += 1
-                break
-    return count
 
 
 def towel(cols, solver):

@@ -159,10 +159,12 @@ def test_grab_move_release_a_free_vertex():
     stiff = HAND_FORCE / HAND_STIFFNESS
     actions = [{'frame': 0, 'op': 'grab', 'vertex': 7, 'to': [0.8, -0.9]},
                {'frame': 10, 'op': 'move', 'vertex': 7, 'to': [0.35, -0.95]}]
+    # (A patch left behind catches up with its hand at HAND_CATCH_UP more than the hand's own
+    # speed: the hand that took hold 0.32 m away in 4 frames, the 0.45 m jump in 6.)
     for f in range(5, 11):
         out = result(curtain(3, actions=actions), f)
         assert math.dist(out['positions'][7], [0.8, -0.9]) < stiff, f
-    for f in range(15, 31, 5):
+    for f in range(17, 31, 5):
         out = result(curtain(3, actions=actions), f)
         assert math.dist(out['positions'][7], [0.35, -0.95]) < stiff, f
     # Beyond reach (1.2 m below the pin above it, whose column is 1 m long) the hand pulls

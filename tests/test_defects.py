@@ -185,7 +185,7 @@ def running(scene, frames=30):
 @pytest.mark.parametrize('change', [{'gravity': [0, -3]}, {'iterations': 7}, {'substeps': 3},
                                     {'solver': 'jakobsen'}, {'solver': 'xpbd'}, {'damping': 4},
                                     {'stretch': 2000}, {'shear': 10}, {'density': 0.4},
-                                    {'corrections': 3}, {'sleep': False}, {'tear': 0.5}])
+                                    {'corrections': 3}, {'sleep': False}, {'strength': 50.0}])
 def test_a_setting_applies_to_the_running_cloth_and_keeps_its_state(change):
     scene = dict(GOOD, damping=1)
     cloth = running(scene)

@@ -10,7 +10,7 @@ import math
 import pytest
 
 from cloth.api import apply_due, load, run
-from cloth.air import feel_air
+from cloth.air import begin as air_stage
 from cloth.keys import MODEL
 from cloth.reference import wind_column, wind_lean
 from cloth.values import SceneError
@@ -35,28 +35,28 @@ def worst(got, ref):
 @pytest.mark.parametrize('rows,wind', [(10, 20.0), (20, 10.0)])
 def test_the_seeds_rigid_column_leans_as_the_exact_equilibrium(rows, wind):
     """The seed's method holds every link at its length, as the reference does. Converged
-    (100 sweeps a step), what is left is the splitting's: the air is a frame's impulse
-    (air.feel_air), so the error halves with the frame time (measured: 7e-3 and then 3.6e-3 of
-    the column's 1 m length)."""
+    (100 sweeps a step), what is left is the seed's weights': it relaxes its links as if every
+    vertex weighed the same, the air (a compliant constraint of its sweeps: air.project) by
+    the vertices' inertia, and the two agree as the frame time shrinks (measured: 2.3e-3 and
+    1.1e-3 of the column's 1 m at 10 rows, 3.8e-3 and 1.3e-3 at 20; felt once a frame as an
+    impulse, 7e-3 and 3.6e-3)."""
     ref = wind_column(rows, 1.0 / (rows - 1), 0.2, 0.1, wind)
     errors = []
     for dt in (1.0 / 60.0, 1.0 / 120.0):
         s = column(rows, wind, solver='jakobsen', iterations=100, sleep=False, dt=dt)
         errors.append(worst(positions(s, round(20.0 / dt)), ref))
-    assert errors[0] < 8e-3 and errors[1] < 0.55 * errors[0], errors
+    assert errors[0] < 5e-3 and errors[1] < 0.55 * errors[0], errors
 
 
-# The air is felt as an impulse on the velocities (air.blow adds to cloth.vel), and the membrane's
-# The air's impulse goes into the velocity and its history (cloth.vel_prev) alike, so a BDF2
-# step takes it once, as a backward Euler or Verlet step does: the column leans as the exact
-# equilibrium of the scene's drag under every solver.
+# The air is a term of the step under every solver (cloth/air.py), so the column leans as the
+# exact equilibrium of the scene's drag.
 @pytest.mark.parametrize('solver,rows,wind', [
     ('vbd', 10, 2.0), ('vbd', 20, 2.0), ('vbd', 10, 5.0),
     ('xpbd', 10, 2.0), ('xpbd', 20, 2.0), ('xpbd', 10, 5.0)])
 def test_a_stiff_column_in_a_steady_wind_leans_as_the_exact_equilibrium(solver, rows, wind):
     """Denim's stretch (1e4 N/m) stands in for the reference's rigid links: its weight
     stretches the column by 1e-5 of its length. Within 0.25% of the column's length (the
-    frame's impulse splitting and the fabric's stretch); the column comes to rest."""
+    fabric's stretch); the column comes to rest."""
     ref = wind_column(rows, 1.0 / (rows - 1), 0.2, 0.1, wind)
     cloth = load(json.dumps(column(rows, wind, solver=solver, stretch=1e4)))
     for _ in range(1200):
@@ -96,18 +96,14 @@ def hem_after(scene, frames):
     return cloth, sum(cloth.pos[2 * k] for k in HEM) / 6 - 0.375
 
 
-# At the page's frame time the membrane's curtain never comes to rest in a steady wind: the
-# 6x5 curtain below flutters at 0.2-2 m/s after 20 s under the default solver (0.04-1.5 m/s
-# under XPBD). The
-# same scene at dt = 1/240 comes to rest (hem 0.1741 m at 5 m/s, with that fix), as does the
-# seed's method at 1/60: the flutter is the step's, not the physics'.
-WIND_NEVER_RESTS = pytest.mark.xfail(strict=True, reason=(
-    'core bug: at dt = 1/60 the membrane curtain flutters in a steady wind and never rests '
-    '(at dt = 1/240 it rests)'))
-
-
-@pytest.mark.parametrize('solver', [pytest.param('vbd', marks=WIND_NEVER_RESTS),
-                                    pytest.param('xpbd', marks=WIND_NEVER_RESTS), 'jakobsen'])
+# The air is a term of the step (cloth/air.py): at the page's frame time the default solver's
+# curtain comes to rest in every wind here, within 15 s (at 10 m/s in 12 s). Felt once a frame as
+# an explicit impulse, it fluttered at 0.2-2 m/s after 20 s and never rested (only at dt
+# = 1/240). XPBD's 16 substeps of one sweep leave its solve unfinished: at 10 m/s it keeps
+# moving at 1.5-3 cm/s after 25 s (0.04-1.5 m/s with the impulse).
+@pytest.mark.parametrize('solver', ['vbd', pytest.param('xpbd', marks=pytest.mark.xfail(strict=True, reason=(
+    'core bug: xpbd: its curtain in a steady 10 m/s wind keeps moving at 1.5-3 cm/s after 25 s (one '
+    'sweep a substep leaves its solve unfinished; the default solver rests in 12 s)'))), 'jakobsen'])
 def test_a_curtains_steady_deflection_grows_with_the_wind_and_holds(solver):
     """A curtain in a steady wind comes to rest deflected, the more the stronger the wind, and
     a wind from the other side deflects it the other way by as much: to a millimetre (no
@@ -115,21 +111,25 @@ def test_a_curtains_steady_deflection_grows_with_the_wind_and_holds(solver):
     method measured 3e-6 m)."""
     hem = []
     for wind in (0.0, 2.0, 5.0, 10.0):
-        cloth, x = hem_after(curtain(wind, solver=solver), 700)
+        cloth, x = hem_after(curtain(wind, solver=solver), 900)
         assert cloth.asleep, wind                       # steady: it came to rest in the wind
         hem.append(x)
     assert abs(hem[0]) < 1e-4 and hem[1] > 0.005 and hem[2] > 2 * hem[1] and hem[3] > hem[2] + 0.03, hem
-    _, x = hem_after(curtain(-5.0, solver=solver), 700)
+    _, x = hem_after(curtain(-5.0, solver=solver), 900)
     assert abs(x + hem[2]) < 1e-3, x + hem[2]
 
 
-# The air pushes a free cloth past its own speed: 5.00006 m/s (drag 1) and 5.00012 m/s (drag
-# 1000) for a wind of 5 m/s under the default solver. Each structural edge gives its vertices
-# up to AIR_MOST of the air's velocity relative to the edge's mean velocity; a vertex whose
-# neighbours lag is pushed by their lag too, past the air.
+# The air pushes a free cloth past its own speed, a little: 5.00006 m/s (drag 1) and 5.003 m/s
+# (drag 1000, in its fourth frame) for a wind of 5 m/s under the default solver. Drag 1000 is
+# BDF2's: a relaxation much faster than a step is not monotone under it (its characteristic
+# roots are complex once the drag's rate times h' passes 3/4), where backward Euler's is. Drag 1
+# is the edges': each pushes by its ends' mean velocity along its own normal, so the air's
+# whole force is not a function of the centre's velocity alone, and a crumpling cloth's
+# inner motion carries it 6e-5 m/s past (the energy in the air's frame only falls).
 PAST_THE_AIR = pytest.mark.xfail(strict=True, reason=(
-    'core bug: the air pushes a free cloth past its own speed by ~1e-4 m/s (an edge pushes '
-    'by its mean velocity, a vertex ahead of a lagging neighbour is pushed further)'))
+    'core bug: the air pushes a free cloth past its own speed by 6e-5 m/s (drag 1: each edge pushes '
+    'along its normal by its ends\' mean velocity) and 3e-3 m/s (drag 1000: BDF2 is not monotone '
+    'for a relaxation faster than its step)'))
 
 
 @pytest.mark.parametrize('drag', [0.05, pytest.param(1.0, marks=PAST_THE_AIR),
@@ -162,7 +162,7 @@ def test_still_air_changes_nothing_and_costs_nothing():
         s = dict(base, **keys)
         assert positions(s, 120) == positions(base, 120), keys
         cloth = load(json.dumps(s))
-        assert feel_air not in cloth.frame_stages      # the air's stage is not even chosen
+        assert air_stage not in cloth.stages            # the air's stage is not even chosen
 
 
 def test_gusts_replay_exactly_and_keep_the_cloth_awake():

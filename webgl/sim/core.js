@@ -143,7 +143,7 @@ export const clothCore = (function (api) {
     sc.stretch = cloth.scene.stretch;
     sc.shear = cloth.scene.shear;
     sc.density = cloth.scene.density;
-    sc.tear = cloth.scene.tear;
+    sc.strength = cloth.scene.strength;
     return out;
   };
   // parseScene(sceneJsonText[, panel]) -> the checked scene, nothing built (cloth/api.py

@@ -72,7 +72,7 @@ export const clothRunner = (function () {
     return { solver: cl.scene.solver, substeps: cl.substeps, iterations: cl.iterations,
              corrections: cl.corrections, stretch: cl.scene.stretch, shear: cl.scene.shear,
              density: cl.scene.density, sleep: !!cl.scene.sleep, damping: cl.scene.damping,
-             tear: cl.scene.tear, n_verts: cl.n_verts, n_edges: cl.n_edges };
+             strength: cl.scene.strength, n_verts: cl.n_verts, n_edges: cl.n_edges };
   }
 
   // 'vbd S1 x 5 +1': the solver and its budget, substeps x iterations (+ corrections), for a
@@ -91,7 +91,7 @@ export const clothRunner = (function () {
       const name = clothScenes ? clothScenes.materialOf(d.stretch, d.shear, d.density) : 'custom';
       parts.push(name !== 'custom' ? name : d.stretch + '/' + d.shear + ' N/m ' + d.density + ' kg/m\u00b2');
     }
-    if (d.tear > 0) parts.push('tear ' + d.tear);
+    if (d.strength > 0) parts.push('strength ' + d.strength + ' N/m');
     return parts.join(', ');
   }
 

@@ -59,17 +59,17 @@ export const clothScenes = (function () {
                       iterations: SCHEMA.keys.iterations.bySolver[i] };
   });
   // The Material control's fabrics (cloth/fabrics.py FABRICS): name -> {label, stretch N/m,
-  // shear N/m, density kg/m^2, what}. The presets hang in the core's preset fabric.
+  // shear N/m, density kg/m^2, strength N/m, what}. The presets hang in the core's preset fabric.
   const MATERIALS = {};
   const fabrics = clothCore.fabrics();
   fabrics.list.forEach(function (f) {
-    MATERIALS[f[0]] = { label: f[1], stretch: f[2], shear: f[3], density: f[4], what: f[5] };
+    MATERIALS[f[0]] = { label: f[1], stretch: f[2], shear: f[3], density: f[4], strength: f[5], what: f[6] };
   });
   // A panel starts with the core's default solver and its steps; a preset's own settings
   // (its damping, tearing, wind) come from its scene (cloth/presets.py).
   const DEFAULT_PARAMS = { solver: SCHEMA.defaultSolver, substeps: SOLVERS[SCHEMA.defaultSolver].substeps,
                            iterations: SOLVERS[SCHEMA.defaultSolver].iterations,
-                           damping: 1, tear: 0, material: fabrics.preset };
+                           damping: 1, strength: 0, material: fabrics.preset };
 
   // The named fabric a scene's stretch, shear and density are, or 'custom' (a scene's own).
   function materialOf(stretch, shear, density) {

@@ -58,11 +58,14 @@ export const clothSettings = (function () {
       retune(Object.assign({}, app.params(), { solver: name, substeps: d.substeps, iterations: d.iterations }), '');
     }
 
-    // A named fabric: its stretch, shear and density, set like every setting (recorded as a
-    // `set` of the three).
+    // A named fabric: its stretch, shear and density, and its strength where the cloth tears
+    // (a cloth that does not tear is left so), set like every setting (recorded as a `set`).
     function setMaterial(name) {
       if (!own(scenes.MATERIALS, name)) { ui.setParams(app.params()); return; }
-      retune(Object.assign({}, app.params(), { material: name }), '');
+      const p = app.params();
+      const change = { material: name };
+      if (p.strength > 0) change.strength = scenes.MATERIALS[name].strength;
+      retune(Object.assign({}, p, change), '');
     }
 
     // New settings for the running cloth (the session's change: cloth/session.py, what a

@@ -139,14 +139,14 @@ export const clothUI = (function () {
       const o = document.createElement('option');
       o.value = name;
       o.textContent = m.label;
-      o.title = m.stretch + ' N/m stretch, ' + m.shear + ' N/m shear, ' + m.density + ' kg/m²';
+      o.title = m.stretch + ' N/m stretch, ' + m.shear + ' N/m shear, ' + m.density + ' kg/m², tears at ' + m.strength + ' N/m';
       $('material').appendChild(o);
       const row = document.createElement('tr');
       const what = document.createElement('td');
       const th = document.createElement('th');
       th.textContent = m.label;
       what.textContent = m.what + ': stretch ' + m.stretch + ' N/m, shear ' + m.shear + ' N/m, ' +
-        m.density + ' kg/m²';
+        m.density + ' kg/m², strength ' + m.strength + ' N/m';
       row.appendChild(th);
       row.appendChild(what);
       $('help-materials').appendChild(row);
