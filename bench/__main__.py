@@ -13,6 +13,10 @@
     python -m bench --figures    the docs' other figures (bench/figures.py): figures.md, .json
     python -m bench --worker     input against the simulation's thread: the session in a Worker
                                  and on the page's thread (bench/worker.py): worker.md, .json
+    python -m bench --contact    obstacles against hands, carries, drags and falls: edges
+                                 through, rest (bench/contact.py): contact.md, .json
+    python -m bench --tear       the first break's pull across grids, and what breaks release
+                                 (bench/tear.py): tear.md, .json
 
 Everything runs in the shipped page, dist/index.html, in headless Chromium.
 """
@@ -39,6 +43,8 @@ def main(argv=None):
     ap.add_argument('--releases', action='store_true', help='every preset pulled, let go, tapped')
     ap.add_argument('--figures', action='store_true', help='the docs\' other figures')
     ap.add_argument('--worker', action='store_true', help='input with the session in a Worker and without')
+    ap.add_argument('--contact', action='store_true', help='obstacles against hands, drags and falls')
+    ap.add_argument('--tear', action='store_true', help='the first break across grids, and the energy breaks release')
     ap.add_argument('--sizes', default=None,
                     help='the front\'s grid sizes, comma-separated (default: 30,60,120,200)')
     ap.add_argument('--out', default=os.path.join(ROOT, 'bench', 'results'),
@@ -88,6 +94,14 @@ def dispatch(args, page, progress, meta):
         from bench import worker
         rows = worker.run(page, args.quick, progress)
         return 'worker', worker.markdown(rows, meta), rows, []
+    if args.contact:
+        from bench import contact
+        rows = contact.run(page, args.quick, progress)
+        return 'contact', contact.markdown(rows, meta), rows, []
+    if args.tear:
+        from bench import tear
+        rows = tear.run(page, args.quick, progress)
+        return 'tear', tear.markdown(rows, meta), rows, []
     if args.figures:
         from bench import figures
         rows = figures.run(page, args.quick, progress)

@@ -16,7 +16,7 @@ from cloth.presets import PRESETS, preset_scene, preset_view
 from cloth.topology import count_edges
 from cloth.hands import HAND_FORCE, HAND_RADIUS, grab, move, move_by, release, pin, unpin
 from cloth.sleep import SLEEP_IMBALANCE
-from cloth.obstacles import obstacle_under, inside_obstacles, edges_through
+from cloth.obstacles import obstacle_under, inside_obstacles, edges_through, move_obstacle
 from cloth.step import new_cloth, frame, cut
 from cloth.measure import measure, nearest, energies
 from cloth.script import apply_settings, apply_due as due
@@ -99,7 +99,8 @@ def operations():
     return [['frame', frame], ['measure', measure], ['grab', grab], ['move', move],
             ['move_by', move_by], ['release', release], ['pin', pin], ['unpin', unpin],
             ['nearest', nearest], ['cut', cut], ['obstacle_under', obstacle_under],
-            ['inside_obstacles', inside_obstacles], ['edges_through', edges_through], ['energies', energies]]
+            ['inside_obstacles', inside_obstacles], ['edges_through', edges_through],
+            ['move_obstacle', move_obstacle], ['energies', energies]]
 
 
 def scene_limit():

@@ -359,7 +359,7 @@ def test_a_scene_setting_in_compare_mode_shows_in_the_editor_and_survives_a_grid
 
 # Issue #22.6: the number being compared stays in sight at every size and panel count.
 LONGEST = {'solver': 'xpbd', 'substeps': 12, 'iterations': 3, 'stretch': 1234.5, 'shear': 67.8,
-           'density': 0.123, 'tear': 0.25}
+           'density': 0.123, 'strength': 25.5}
 LABEL_RMS = '''(i) => {
   const el = document.querySelectorAll('.panel-label')[i], line = el.lastChild;
   const text = line.textContent, at = text.indexOf('rms ');

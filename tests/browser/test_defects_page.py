@@ -49,23 +49,23 @@ def test_a_field_without_a_number_changes_nothing_and_says_so(open_page):
 
 
 def test_a_field_where_empty_means_off_tells_letters_from_empty(open_page):
-    """Tear is off when empty; letters typed into it are not "empty" (a number field reports
-    them as '' and tearing went off without a word), and a negative limit is a slip, not the
-    minimum that shreds the cloth."""
+    """Strength is off (the cloth does not tear) when empty; letters typed into it are not
+    "empty" (a number field reports them as '' and tearing went off without a word), and a
+    negative strength is a slip, not the minimum that shreds the cloth."""
     pg = open_page()
     pg.js('clothApp.setPaused(true)')
-    set_input(pg, '#tear', '0.5')
-    assert pg.info()['params']['tear'] == 0.5
-    for text in ['abc', 'Infinity', '1e400', 'NaN', '-', '0.5x']:
-        set_input(pg, '#tear', text)
+    set_input(pg, '#strength', '50')
+    assert pg.info()['params']['strength'] == 50
+    for text in ['abc', 'Infinity', '1e400', 'NaN', '-', '50x']:
+        set_input(pg, '#strength', text)
         assert 'not a' in note(pg), (text, note(pg))
-        assert pg.info()['params']['tear'] == 0.5 and pg.input_value('#tear') == '0.5', text
-    set_input(pg, '#tear', '-1')
-    assert 'below 0' in note(pg) and pg.info()['params']['tear'] == 0.5
-    set_input(pg, '#tear', '0.001')
-    assert 'clamped to its minimum 0.01' in note(pg) and pg.info()['params']['tear'] == 0.01
-    set_input(pg, '#tear', '')
-    assert pg.info()['params']['tear'] == 0 and pg.input_value('#tear') == ''
+        assert pg.info()['params']['strength'] == 50 and pg.input_value('#strength') == '50', text
+    set_input(pg, '#strength', '-1')
+    assert 'below 0' in note(pg) and pg.info()['params']['strength'] == 50
+    set_input(pg, '#strength', '0.5')
+    assert 'clamped to its minimum 1' in note(pg) and pg.info()['params']['strength'] == 1
+    set_input(pg, '#strength', '')
+    assert pg.info()['params']['strength'] == 0 and pg.input_value('#strength') == ''
 
 
 def test_a_drag_faster_than_the_cloth_can_follow_is_no_error(open_page):

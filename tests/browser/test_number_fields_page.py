@@ -26,7 +26,7 @@ def note(pg):
     return pg.info()['note']
 
 
-@pytest.mark.parametrize('field', ['gravity', 'damping', 'iterations', 'tear'])
+@pytest.mark.parametrize('field', ['gravity', 'damping', 'iterations', 'strength'])
 def test_text_that_is_not_a_plain_number_is_refused_in_every_panel_field(open_page, field):
     pg = open_page()
     pg.js('clothApp.setPaused(true)')
@@ -55,8 +55,8 @@ def test_a_typographic_minus_and_a_decimal_comma_are_read_as_meant_and_said(open
     assert pg.info()['params']['gravity'] == 9.5 and 'as 9.5' in note(pg)
     type_into(pg, '#damping', '0,25')
     assert pg.info()['params']['damping'] == 0.25
-    type_into(pg, '#tear', '\u22121')                        # read as -1: below 0, refused as before
-    assert 'below 0' in note(pg) and pg.info()['params']['tear'] == 0
+    type_into(pg, '#strength', '\u22121')                    # read as -1: below 0, refused as before
+    assert 'below 0' in note(pg) and pg.info()['params']['strength'] == 0
     # Read, then clamped: both are said.
     type_into(pg, '#damping', '\u22122')
     assert pg.info()['params']['damping'] == 0
@@ -81,17 +81,17 @@ def test_arrow_keys_step_a_field_within_its_range(open_page):
 def test_an_arrow_key_in_an_empty_field_steps_from_what_it_stands_for(open_page):
     pg = open_page()
     pg.js('clothApp.setPaused(true)')
-    assert pg.info()['params']['tear'] == 0 and pg.input_value('#tear') == ''
-    pg.locator('#tear').press('ArrowDown')          # below none is none
-    assert pg.info()['params']['tear'] == 0
-    pg.locator('#tear').press('ArrowUp')            # none steps up to the least limit
-    assert pg.info()['params']['tear'] == 0.01 and pg.input_value('#tear') == '0.01'
-    pg.locator('#tear').press('ArrowUp')
-    assert pg.info()['params']['tear'] == 0.02
-    type_into(pg, '#tear', 'off')
-    assert pg.info()['params']['tear'] == 0
-    pg.locator('#tear').press('ArrowUp')
-    assert pg.info()['params']['tear'] == 0.01
+    assert pg.info()['params']['strength'] == 0 and pg.input_value('#strength') == ''
+    pg.locator('#strength').press('ArrowDown')      # below none is none
+    assert pg.info()['params']['strength'] == 0
+    pg.locator('#strength').press('ArrowUp')        # none steps up to the least limit
+    assert pg.info()['params']['strength'] == 1 and pg.input_value('#strength') == '1'
+    pg.locator('#strength').press('ArrowUp')
+    assert pg.info()['params']['strength'] == 2
+    type_into(pg, '#strength', 'off')
+    assert pg.info()['params']['strength'] == 0
+    pg.locator('#strength').press('ArrowUp')
+    assert pg.info()['params']['strength'] == 1
     # The compare editor's empty field is the panel's running value: panel 2 runs the scene's
     # substeps without naming them.
     pg.js("clothApp.compare([{solver: 'jakobsen'}, {solver: 'xpbd'}])")

@@ -146,7 +146,7 @@ def scenes(draw):
     for key, strategy in [('substeps', st.integers(1, 4)), ('iterations', st.integers(0, 8)),
                           ('corrections', st.integers(0, 3)), ('damping', st.floats(0, 3)),
                           ('sleep', st.booleans()), ('dt', st.sampled_from([1 / 60, 0.25])),
-                          ('tear', st.sampled_from([0.01, 0.1, 0.5, 2.0])),
+                          ('strength', st.sampled_from([5.0, 50.0, 250.0, 1000.0])),
                           ('gravity', st.tuples(coord, st.floats(-30, 30)).map(list)),
                           ('wind', st.tuples(st.floats(-40, 40), st.floats(-40, 40)).map(list)),
                           ('drag', st.sampled_from([0, 0.05, 1.0, 50.0])),

@@ -46,8 +46,9 @@ def test_the_page_reads_the_cores_declarations(open_page):
                 (k.field_lo, k.field_hi, k.step, k.label, k.kind == 'int'), k.key
         else:
             assert k.key not in got['limits'], k.key
-    # Only tearing's 0 means none (an empty field, `off`); a cloth always has a density.
-    assert got['limits']['tear']['off']
+    # Only the strength's 0 means none (an empty field, `off`: it does not tear); a cloth
+    # always has a density.
+    assert got['limits']['strength']['off']
     assert not got['limits']['density']['off'] and not got['limits']['damping']['off']
     for i, name in enumerate(SOLVERS):
         assert (got['solvers'][name]['label'], got['solvers'][name]['substeps'],
@@ -85,7 +86,7 @@ def test_the_panels_fields_are_captioned_and_bounded_by_their_keys(open_page):
     assert 'Iterations clamped to its maximum %d' % k['iterations'].field_hi in pg.info()['note']
     # Each field is read from and written to its key: typed in, it is what the cloth runs
     # (a point key's field is its y component; a grid key makes a new grid).
-    typed = {'iterations': '3', 'substeps': '5', 'gravity': '-4.5', 'damping': '0.5', 'tear': '0.7',
+    typed = {'iterations': '3', 'substeps': '5', 'gravity': '-4.5', 'damping': '0.5', 'strength': '70',
              'cols': '9', 'rows': '8', 'wind': '3', 'gust': '0.5'}
     assert set(typed) == set(PANEL_FIELDS)
     for key in PANEL_FIELDS:
@@ -111,11 +112,11 @@ def test_the_compare_editor_offers_exactly_the_keys_a_panel_may_have(open_page):
     assert len(shown) == 2
     for keys in shown:
         assert sorted(keys) == sorted(COMPARE_KEYS)
-    # Every field it offers makes a scene the core takes: a panel with Tear off (null: none)
+    # Every field it offers makes a scene the core takes: a panel with Strength off (null: none)
     # and a fabric of its own runs, and its scene says so.
     pg.js('clothApp.setPaused(true)')
     pg.locator('#compare-list summary >> nth=1').click()     # panel 2's "more"
-    for key, text, value in [('tear', 'off', None), ('stretch', '5000', 5000), ('shear', '0', 0),
+    for key, text, value in [('strength', 'off', None), ('stretch', '5000', 5000), ('shear', '0', 0),
                              ('density', '0.4', 0.4), ('corrections', '3', 3)]:
         sel = '#compare-list input[data-key=%s] >> nth=1' % key
         pg.fill(sel, text)

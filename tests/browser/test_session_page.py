@@ -13,7 +13,7 @@ from cloth.keys import MODEL
 SCENE = {'model': MODEL, 'cols': 9, 'rows': 7, 'spacing': 0.1, 'pins': [0, 8], 'damping': 1, 'density': 0.2,
          'stretch': 500, 'shear': 50}
 # Every solver: the seed's, the default tearing, XPBD in a stiffer fabric.
-PAIR = [{'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}, {'solver': 'vbd', 'tear': 0.5},
+PAIR = [{'solver': 'jakobsen', 'substeps': 1, 'iterations': 20}, {'solver': 'vbd', 'strength': 50.0},
         {'solver': 'xpbd', 'stretch': 5000, 'shear': 150}]
 
 

@@ -99,7 +99,7 @@ def test_a_moving_cloth_allocates_nothing_per_frame(app):
     page.evaluate('''() => {
         const pins = []; for (let c = 0; c < 40; c += 3) pins.push(c); pins.push(39);
         clothApp.loadScene(JSON.stringify({model: %d, cols: 40, rows: 30, spacing: 0.1, damping: 0, sleep: false,
-                                           pins: pins, tear: 10}));
+                                           pins: pins, strength: 5000}));
         const ops = clothCore.ops(clothApp.cloth());
         ops.grab(1170, 1.5, -1.5); ops.release(1170);
         clothApp.advance(3000); }''' % MODEL)

@@ -12,7 +12,8 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 from browser_helpers import ROOT, load_paused, steady_bytes_per_frame
 
 from cloth.keys import MODEL
-from cloth.presets import PRESETS, TEARABLE_STRAIN
+from cloth.presets import PRESETS, TEARABLE_FABRIC
+from cloth.fabrics import fabric
 
 SMALL = {'model': MODEL, 'cols': 14, 'rows': 10, 'spacing': 0.1, 'pins': [0, 4, 9, 13], 'damping': 1}
 
@@ -127,13 +128,13 @@ def test_the_cut_tool_cuts_with_a_finger_and_a_pen(open_page):
     replays(pg)
 
 
-def test_tearing_past_the_limit_and_the_tear_field(open_page):
+def test_tearing_past_the_strength_and_the_strength_field(open_page):
     pg = open_page()
     load(pg)
-    assert pg.locator('#tear').input_value() == ''           # off: the field's placeholder
-    pg.locator('#tear').fill('0.2')
-    pg.locator('#tear').press('Enter')
-    assert pg.info()['params']['tear'] == 0.2
+    assert pg.locator('#strength').input_value() == ''       # off: the field's placeholder
+    pg.locator('#strength').fill('30')
+    pg.locator('#strength').press('Enter')
+    assert pg.info()['params']['strength'] == 30
     x, y = pg.state()['screen'][9 * 14 + 6]
     # Pinned first, so that the vertex goes where it is dragged: a hand of finite strength
     # cannot tear a cloth that does not stretch (tests/test_tear.py).
@@ -149,15 +150,15 @@ def test_tearing_past_the_limit_and_the_tear_field(open_page):
     pg.js('clothApp.advance(30)')
     assert all(math.isfinite(v) for p in pg.state()['positions'] for v in p)
     # off again, and not-a-number is refused with a note
-    pg.locator('#tear').fill('1e999')            # no finite number: refused, the old value kept
-    pg.locator('#tear').press('Enter')
-    assert 'not a finite number' in pg.info()['note'] and pg.info()['params']['tear'] == 0.2
-    assert pg.locator('#tear').input_value() == '0.2'
-    pg.locator('#tear').fill('')                 # empty (or 0): off
-    pg.locator('#tear').press('Enter')
-    assert pg.info()['params']['tear'] == 0
+    pg.locator('#strength').fill('1e999')        # no finite number: refused, the old value kept
+    pg.locator('#strength').press('Enter')
+    assert 'not a finite number' in pg.info()['note'] and pg.info()['params']['strength'] == 30
+    assert pg.locator('#strength').input_value() == '30'
+    pg.locator('#strength').fill('')             # empty (or 0): off
+    pg.locator('#strength').press('Enter')
+    assert pg.info()['params']['strength'] == 0
     rec = json.loads(pg.js('clothApp.recording()'))
-    assert [a['scene'] for a in rec['actions'] if a['op'] == 'set'] == [{'tear': 0.2}, {'tear': None}]
+    assert [a['scene'] for a in rec['actions'] if a['op'] == 'set'] == [{'strength': 30}, {'strength': None}]
     replays(pg)
 
 
@@ -165,8 +166,9 @@ def test_the_tearable_preset_invites_it(open_page):
     pg = open_page()
     pg.keyboard.press(str([p[0] for p in PRESETS].index('tearable') + 1))     # its number key
     info = pg.info()
-    assert info['preset'] == 'tearable' and info['params']['tear'] == TEARABLE_STRAIN
-    assert json.loads(info['scene'])['tear'] == info['params']['tear']
+    assert info['preset'] == 'tearable' and info['params']['strength'] == fabric(TEARABLE_FABRIC)[5]
+    assert json.loads(info['scene'])['strength'] == info['params']['strength']
+    assert info['params']['material'] == TEARABLE_FABRIC
     pg.js('clothApp.setPaused(true)')
     pg.js('clothApp.advance(240)')
     assert pg.info()['broken'] == 0            # it hangs whole under its own weight
