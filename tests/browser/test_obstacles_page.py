@@ -57,6 +57,14 @@ RELEASE = '''([preset, cols, rows, d]) => {
   if (d > 0) ops.grab(k, x0, y0);
   for (let f = 0; f < 30; f++) { if (d > 0) ops.move(k, x0, y0 - d * (f + 1) / 30); ops.frame(); }
   for (let f = 0; f < 30; f++) ops.frame();
+  // The largest strain the pull left: what the release lets go as speed, up to its strain
+  // times the fabric's wave speed sqrt(stretch / density).
+  let strain = 0;
+  for (let e = 0; e < c.n_struct; e++) {
+    const a = c.edge_a[e], b = c.edge_b[e];
+    strain = Math.max(strain, Math.hypot(c.pos[2 * b] - c.pos[2 * a], c.pos[2 * b + 1] - c.pos[2 * a + 1]) / c.rest[e] - 1);
+  }
+  const snap = strain * Math.sqrt(c.scene.stretch / c.scene.density);
   if (d > 0) ops.release(k);
   // After the release: the fastest free vertex, the highest, and how far the kinetic energy
   // ever rises above what it could come from (the kinetic and elastic energy held at the
@@ -76,7 +84,7 @@ RELEASE = '''([preset, cols, rows, d]) => {
   }
   let held = true;
   for (let i = 0; i < c.n_verts; i++) if (c.pinned[i] !== 0 && c.fixed[i] === 0) held = false;
-  return {speed: most, top: top, held: held, rise: rise, moving: e0[0] + e0[1],
+  return {speed: most, top: top, held: held, rise: rise, moving: e0[0] + e0[1], snap: snap,
           peg: c.n_obstacles ? [c.obstacle_at[1] - c.obstacle_half[1], c.obstacle_at[1] + c.obstacle_half[1]] : null}; }'''
 
 # An unfinished solve may leave a little energy, at most this share of what was moving
@@ -91,7 +99,10 @@ def test_the_new_presets_at_every_size_keep_what_they_hold_and_do_not_fling(open
     corner flings nothing. The towel, which nothing drives: the release adds no energy (issue
     #40: the stretch the hand left comes back as motion, the corner snapping back at 6-7 m/s,
     and no more), and nothing is thrown up past its peg. The flag, driven by gusts: no free
-    vertex faster than 3 m/s past what the same cloth does untouched (issue #21's limit)."""
+    vertex faster than what the same cloth does untouched plus 3 m/s (issue #21's limit) or,
+    where more, plus the speed the pull's largest strain gives back (strain times the wave
+    speed: the flag at 10x7, calmer untouched since the air is a term of the step, 2.5 m/s,
+    snaps back at 6.1 m/s from a 0.5 m pull)."""
     pg = open_page('?paused=1')
     for preset, sizes in (('towel', [(10, 10), (30, 30), (60, 60)]), ('flag', [(10, 7), (30, 20), (60, 40)])):
         for cols, rows in sizes:
@@ -103,7 +114,7 @@ def test_the_new_presets_at_every_size_keep_what_they_hold_and_do_not_fling(open
                     assert got['rise'] <= GAIN * got['moving'], (cols, d, got)
                     assert got['top'] <= got['peg'][0] + 1e-9, (cols, d, got)     # under its peg
                 else:
-                    assert got['speed'] < still['speed'] + 3.0, (cols, d, got, still)
+                    assert got['speed'] < still['speed'] + max(3.0, got['snap']), (cols, d, got, still)
             if preset == 'towel':
                 assert still['top'] <= still['peg'][0] + 1e-9, (cols, still)
 
