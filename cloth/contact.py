@@ -298,8 +298,8 @@ def lag_friction(cloth):
     tangent to their whole push, and the obstacle that pushes hardest (whose move its slide is
     measured against). cloth.pressed: the vertices the barrier pushes and no spring pulls (a
     crumpled pile's: obstacles.correct_where). A piece with a vertex
-    near an obstacle is marked (piece_touched: the energy's account leaves it alone,
-    energy.py)."""
+    near an obstacle is marked (piece_touched 2: the energy's account moves it back only along
+    clear paths, energy.fall_back)."""
     pos = cloth.pos
     acc = cloth.acc
     other = cloth.adj_other
@@ -310,7 +310,8 @@ def lag_friction(cloth):
         i = zone_vertex(cloth, z)
         if cloth.fixed[i] != 0 or not ring_near(cloth, i, pos[i + i], pos[i + i + 1]):
             continue
-        cloth.piece_touched[cloth.piece[i]] = 1
+        if cloth.piece_touched[cloth.piece[i]] == 0:
+            cloth.piece_touched[cloth.piece[i]] = 2
         xi = pos[i + i]
         yi = pos[i + i + 1]
         fx = 0.0
@@ -456,3 +457,23 @@ def energy_along(cloth, d):
             cloth.sum[1] = BLOCKED
             return
     cloth.sum[1] = s
+
+
+def barrier_by_piece(cloth, xs, out, stride, slot):
+    """The barrier's energy of each piece p with the cloth at xs (pos, or the step's start
+    prev), added to out[stride p + slot]: its free vertices' and its edges' terms over the zone
+    (ccd.zone: out of it, a vertex and its edges are beyond the barrier's reach). The account of
+    energy.py holds the barrier as what it is, a term of the cloth's potential."""
+    piece = cloth.piece
+    for z in range(zone_size(cloth)):
+        i = zone_vertex(cloth, z)
+        if cloth.fixed[i] != 0:
+            continue
+        out[stride * piece[i] + slot] += point_energy(cloth, i, xs[i + i], xs[i + i + 1])
+    for e in range(cloth.n_edges):
+        a = cloth.edge_a[e]
+        if cloth.through[e] != 0 or (cloth.loose == 0 and cloth.zone[a] == 0):
+            continue
+        c = cloth.edge_b[e]
+        out[stride * piece[a] + slot] += edge_energy(cloth, a, xs[a + a], xs[a + a + 1],
+                                                     c, xs[c + c], xs[c + c + 1])
