@@ -17,6 +17,8 @@
                                  through, rest (bench/contact.py): contact.md, .json
     python -m bench --tear       the first break's pull across grids, and what breaks release
                                  (bench/tear.py): tear.md, .json
+    python -m bench --air        the Flag's shape across grids, a curtain at rest in a steady
+                                 wind (bench/air.py): air.md, .json
 
 Everything runs in the shipped page, dist/index.html, in headless Chromium.
 """
@@ -45,6 +47,7 @@ def main(argv=None):
     ap.add_argument('--worker', action='store_true', help='input with the session in a Worker and without')
     ap.add_argument('--contact', action='store_true', help='obstacles against hands, drags and falls')
     ap.add_argument('--tear', action='store_true', help='the first break across grids, and the energy breaks release')
+    ap.add_argument('--air', action='store_true', help='the Flag across grids, a curtain in a steady wind')
     ap.add_argument('--sizes', default=None,
                     help='the front\'s grid sizes, comma-separated (default: 30,60,120,200)')
     ap.add_argument('--out', default=os.path.join(ROOT, 'bench', 'results'),
@@ -102,6 +105,10 @@ def dispatch(args, page, progress, meta):
         from bench import tear
         rows = tear.run(page, args.quick, progress)
         return 'tear', tear.markdown(rows, meta), rows, []
+    if args.air:
+        from bench import air
+        rows = air.run(page, args.quick, progress)
+        return 'air', air.markdown(rows, meta), rows, []
     if args.figures:
         from bench import figures
         rows = figures.run(page, args.quick, progress)

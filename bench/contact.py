@@ -71,7 +71,7 @@ def run(page, quick, progress):
             r = page.evaluate('([t, s, j, dx, dy, f, a]) => __bench.drag(t, s, j, dx, dy, f, a)',
                               [json.dumps(obj), SETTLE, len(obj['obstacles']) - 1, 0, 1.5 * h + 0.15 * size, 30, 60])
             rows.append(dict(r, kind='drag', preset=name, cols=cols, rows=rows_, what='disc up through it'))
-    for n in ([10] if quick else [10, 20, 40]):
+    for n in ([10] if quick else [10, 20, 40, 60]):
         progress('pile %dx%d on a box' % (n, n))
         obj = {'model': MODEL, 'cols': n, 'rows': n, 'spacing': 1.0 / (n - 1), 'pins': [], 'damping': 1,
                'obstacles': [{'box': [0.1, -1.8, 0.9, -1.4], 'friction': 0.5}]}

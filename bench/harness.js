@@ -185,6 +185,18 @@
 
   // Run until the cloth sleeps, at most `frames`; returns when (s, -1: never), the fastest
   // vertex and the most edges through an obstacle on the way.
+  // Run a scene `frames` frames; the mean of its positions over the last `avg` of them, and its
+  // imbalance at the end (the air's figures: a flag's shape in its gusts).
+  B.meanShape = function (text, frames, avg) {
+    const cl = clothCore.load(text), r = M.run(cl), n2 = 2 * cl.n_verts, acc = new Float64Array(n2);
+    for (let f = 1; f <= frames; f++) {
+      M.step(r, 1, 0);
+      if (f > frames - avg) for (let i = 0; i < n2; i++) acc[i] += cl.pos[i];
+    }
+    for (let i = 0; i < n2; i++) acc[i] /= avg;
+    return { pos: Array.from(acc), imbalance: cl.imbalance, finite: acc.every(Number.isFinite) };
+  };
+
   B.rest = function (text, frames) {
     const cl = clothCore.load(text), r = M.run(cl), ops = r.ops;
     let through = 0;

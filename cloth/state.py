@@ -133,6 +133,7 @@ class Cloth:
         self.windy = False
         self.air_t = 0.0
         self.air_k = f64(0)
+        self.air_w = f64(0)
         # obstacles (cloth/obstacles.py): each one's shape, half width and height, friction,
         # and centre: where it is (`at`), where it was when the step began (`was`), where the
         # frame began (`from`), and where an `obstacle` action sends it by the end of the
