@@ -12,11 +12,17 @@ one move an animation frame. Measured in the page:
   Tasks API): time in which input and drawing wait;
 - **fps**: frames drawn per second; **sim/s**: simulated seconds per second (below 1: slow
   motion).
+
+**The simulation's clock**: every preset at its default size, as the page opens it (the
+session in its Worker, which keeps the simulation's own clock), on a large stage (1600x1000:
+software WebGL fills its pixels slowly, so the drawing is slow), for CLOCK_SECONDS after a
+warm-up: simulated seconds per second (target: at least 0.95), frames drawn per second, and the
+simulation's own ms a frame (the readout's).
 """
 
 import json
 
-from cloth.presets import preset_scene
+from cloth.presets import PRESETS, preset_scene
 from bench.page import DIST
 
 SIZES = [71, 200]
@@ -28,6 +34,10 @@ WARM_SECONDS = 1.5
 # thread, and at 1000x700 filling them took most of it at every grid size, hiding the
 # simulation's share (71x71 drew 4.6 frames a second, 200x200, whose cells are filled, 18.5).
 VIEWPORT = {'width': 480, 'height': 360}
+CLOCK_VIEWPORT = {'width': 1600, 'height': 1000}
+CLOCK_SECONDS = 6.0
+QUICK_CLOCK_SECONDS = 2.0
+CLOCK_TARGET = 0.95
 
 PROBE = '''() => {
   const out = window.__probe = { lat: [], longMs: 0, frames: 0, t0: performance.now(), f0: clothApp.info().frames };
@@ -74,11 +84,33 @@ def measure(browser, worker, n, seconds):
             'speed': p['simulated'] / (p['ms'] / 1000), 'moves': len(lat), 'seconds': seconds, 'errors': errors}
 
 
+def clock(browser, name, seconds):
+    """A preset at its default size, opened as a person opens it, run `seconds`."""
+    page = browser.new_page(viewport=CLOCK_VIEWPORT)
+    errors = []
+    page.on('pageerror', lambda e: errors.append(str(e)))
+    page.goto('file://%s?preset=%s' % (DIST, name))
+    page.wait_for_function('() => window.clothApp && clothApp.info().frames >= 0')
+    page.wait_for_timeout(WARM_SECONDS * 1000)
+    start = page.evaluate('() => { window.__drawn = 0; (function f() { window.__drawn++; requestAnimationFrame(f); })();'
+                          ' return [performance.now(), clothApp.info().frames]; }')
+    page.wait_for_timeout(seconds * 1000)
+    end = page.evaluate('() => [performance.now(), clothApp.info().frames, window.__drawn, clothApp.info().simMs,'
+                        ' clothApp.info().worker, clothApp.state().positions.length, clothApp.info().params]')
+    page.close()
+    wall = (end[0] - start[0]) / 1000
+    return {'kind': 'clock', 'preset': name, 'grid': str(end[6]), 'verts': end[5], 'speed': (end[1] - start[1]) / 60 / wall,
+            'fps': end[2] / wall, 'simMs': end[3], 'worker': end[4], 'seconds': seconds, 'errors': errors}
+
+
 def run(page, quick, progress):
     browser = page.context.browser
     sizes = QUICK_SIZES if quick else SIZES
     seconds = QUICK_RUN_SECONDS if quick else RUN_SECONDS
     rows = []
+    for p in PRESETS:
+        progress('the clock: %s at its default size' % p[0])
+        rows.append(clock(browser, p[0], QUICK_CLOCK_SECONDS if quick else CLOCK_SECONDS))
     for worker in (True, False):
         for n in sizes:
             progress('%s, Large cloth %dx%d' % ('worker' if worker else 'page thread', n, n))
@@ -87,8 +119,22 @@ def run(page, quick, progress):
 
 
 def markdown(rows, meta):
+    clocks = [r for r in rows if r.get('kind') == 'clock']
+    rows = [r for r in rows if r.get('kind') != 'clock']
+    slow = ['%s %.2f' % (r['preset'], r['speed']) for r in clocks if r['speed'] < CLOCK_TARGET]
     lines = ['# Input and the simulation\'s thread', '',
              '`python -m bench --worker` on %s, %s.' % (meta['date'], meta['machine']), '',
+             '**The simulation\'s clock**: every preset at its default size, opened as a person opens it '
+             '(the session in its Worker) on a %dx%d stage, run %g s: simulated seconds per second '
+             '(target: at least %.2f), frames drawn per second, and the simulation\'s ms a frame.' % (
+                 CLOCK_VIEWPORT['width'], CLOCK_VIEWPORT['height'], clocks[0]['seconds'] if clocks and 'seconds' in clocks[0] else CLOCK_SECONDS,
+                 CLOCK_TARGET), '',
+             'Target: ' + ('PASS, every one' if not slow else 'FAIL: ' + ', '.join(slow)), '',
+             '| preset | size | sim/s | fps (drawn) | sim ms a frame |', '|---|---|---|---|---|']
+    for r in clocks:
+        lines.append('| %s | %d vertices | %.3f | %.1f | %s |' % (r['preset'], r['verts'], r['speed'], r['fps'],
+                                                              '%.2f' % r['simMs'] if r['simMs'] is not None else 'at rest'))
+    lines += ['',
              'Large cloth dragged for %g s, one pointer move an animation frame, with the session in a '
              'Web Worker (the page\'s default) and on the page\'s thread (?worker=0). **latency**: a '
              'pointer event to the next animation frame after it was handled (ms, median and 95th '

@@ -2,12 +2,14 @@
 // session in a Worker); draw/ shows its snapshots, input/ turns pointers into its gestures, ui/
 // holds the controls, the scene that runs, the readouts and the test seam (window.clothApp).
 //
-// Loop: the core advances a fixed dt per frame; the wall clock appears only here. Elapsed time
-// goes into an accumulator, capped at MAX_GAP (a stall becomes a short pause, never a huge
-// step); at most MAX_CATCHUP frames are due per animation frame, and no more run once
-// FRAME_BUDGET_MS is spent: the rest is dropped (slow motion, and the readout says so), never
-// owed, so input never waits for a burst of catch-up. A Worker is asked for the frames due when
-// it is idle; the page draws what it posted last and never waits for it.
+// Loop: the core advances a fixed dt per frame. With the session in a Worker (the default), the
+// Worker keeps the simulation's own clock (sim/clock.js, sim/worker.js): it steps at wall-clock
+// rate whatever the drawing's rate, and the page draws the latest state it posted, never
+// waiting for it; the page only says whether it runs (not paused, not hidden). On the page's
+// own thread (?worker=0) elapsed time goes into an accumulator, capped at MAX_GAP (a stall
+// becomes a short pause, never a huge step); at most MAX_CATCHUP frames are due per animation
+// frame, and no more run once FRAME_BUDGET_MS is spent: the rest is dropped (slow motion, and
+// the readout says so), never owed, so input never waits for a burst of catch-up.
 import { clothBlade } from './draw/blade.js';
 import { clothCapture } from './draw/capture.js';
 import { clothCharts } from './draw/charts.js';
@@ -152,7 +154,11 @@ import { clothViews } from './draw/views.js';
     return panels.frame();
   }
 
-  function setPaused(on) { paused = !!on; acc = 0; ui.setPaused(paused); }
+  function setPaused(on) { paused = !!on; acc = 0; ui.setPaused(paused); running(); }
+
+  // The Worker's clock runs while the page is neither paused nor hidden.
+  function running() { if (panels.remote) panels.running(!paused && !document.hidden); }
+  document.addEventListener('visibilitychange', running);
 
   const numbers = clothReadouts.create(ui, compareUI);
   const frameTimes = clothReadouts.frameClock();
@@ -163,7 +169,8 @@ import { clothViews } from './draw/views.js';
     fps = frameTimes.rate();
     fpsAt = last;
     overlays.measure();
-    if (wanted > 0) speed = played / wanted;
+    if (panels.remote) speed = panels.rate();
+    else if (wanted > 0) speed = played / wanted;
     wanted = 0; played = 0;
     panels.refresh();
     numbers.show({ reads: panels.reads(), simMs: panels.times(), rects: views.rects(), paused: paused, speed: speed,
@@ -192,14 +199,7 @@ import { clothViews } from './draw/views.js';
         const dt = panels.read(0).dt;
         acc += gap;
         wanted += gap;
-        if (panels.remote) {
-          // Frames are asked for while the Worker is idle; a backlog past the catch-up cap is
-          // dropped, and what comes back is counted as it arrives.
-          acc = Math.min(acc, MAX_CATCHUP * dt);
-          const due = panels.idle() ? Math.floor(acc / dt) : 0;
-          if (due > 0) acc -= panels.request(due, FRAME_BUDGET_MS) * dt;
-          if (panels.asleep()) played += gap;
-        } else {
+        if (!panels.remote) {
           const due = Math.min(Math.floor(acc / dt), MAX_CATCHUP);
           const done = due > 0 ? simulate(due, FRAME_BUDGET_MS) : 0;
           // What the budget or the catch-up cap left undone is dropped, not owed: a slow scene
@@ -285,7 +285,7 @@ import { clothViews } from './draw/views.js';
   // of it. The Live charts box shows them.
   const box = canvas.getBoundingClientRect();
   if (box.width < 420 || box.height < 420) { chartsOn = false; ui.setCharts(false); }
-  ui.setPaused(false);
+  setPaused(false);
   try {
     scene.usePreset(options.preset);
   } catch (e) {

@@ -162,3 +162,65 @@ def test_the_readouts_read_the_workers_cloth(browser):
         assert errors == []
     finally:
         context.close()
+
+
+def test_the_clock_owes_the_frames_the_wall_clock_has_passed_and_drops_a_backlog(browser):
+    """The simulation's own clock (webgl/sim/clock.js), driven with times of the test's own:
+    the frames due follow the wall clock whatever the rate it is asked at; a backlog past
+    MAX_BEHIND is dropped (slow motion), never owed; the rate says simulated seconds per
+    second; a start again owes nothing for the time before it."""
+    context, page, errors = open_worker_page(browser, '?paused=1')
+    try:
+        r = page.evaluate('''() => {
+          const C = clothClock, c = C.create(1 / 60), out = {};
+          C.start(c, 100, 1 / 60);
+          // Asked 10 times a second (a slow drawing): 6 frames each time, 60 a second.
+          let total = 0;
+          for (let i = 1; i <= 20; i++) { const n = C.due(c, 100 + i / 10); C.ran(c, n, 100 + i / 10); total += n; }
+          out.total = total; out.rate = c.rate;
+          // Asked at 60.5 frames' worth after a frame: none due until the next frame's time.
+          out.none = C.due(c, 102 + 0.5 / 60);
+          out.wait = C.wait(c, 102 + 0.5 / 60);
+          // A 5 s stall: only MAX_BEHIND's worth is due; the rest is dropped.
+          out.stall = C.due(c, 107);
+          C.ran(c, out.stall, 107);
+          out.after = C.due(c, 107 + 1 / 60);
+          out.cap = Math.ceil(C.MAX_BEHIND * 60);
+          // A machine that runs one frame of each 4 due: the rate falls to about a quarter.
+          C.start(c, 200, 1 / 60);
+          for (let i = 1; i <= 120; i++) { const t = 200 + i / 60, n = C.due(c, t); C.ran(c, Math.min(n, 1) * (i % 4 === 0 ? 1 : 0), t); }
+          out.slow = c.rate;
+          C.start(c, 500, 1 / 30);
+          out.restart = C.due(c, 500);
+          out.later = C.due(c, 500 + 0.1);
+          return out;
+        }''')
+        assert r['total'] == 120 and abs(r['rate'] - 1) < 1e-9, r
+        assert r['none'] == 0 and abs(r['wait'] - 0.5 / 60) < 1e-9, r
+        assert r['stall'] == r['cap'] and r['after'] == 1, r
+        assert 0.2 < r['slow'] < 0.3, r
+        assert r['restart'] == 0 and r['later'] == 3, r
+        assert errors == []
+    finally:
+        context.close()
+
+
+def test_the_worker_keeps_time_while_the_page_draws_nothing(browser):
+    """The Worker steps on its own clock: with no animation frame on the page (a drawing
+    stalled), the simulation still moves on; paused, it stops."""
+    stop_frames = 'window.requestAnimationFrame = function () { return 0; };'
+    context, page, errors = open_worker_page(browser, '?preset=corners')
+    try:
+        page.evaluate(stop_frames)
+        page.evaluate('clothApp.advance(0)')
+        before = page.evaluate('clothApp.info().frames')
+        page.wait_for_function('(f) => clothApp.info().frames > f + 30', arg=before)
+        page.evaluate('clothApp.setPaused(true)')
+        page.evaluate('clothApp.advance(0)')
+        paused = page.evaluate('clothApp.info().frames')
+        page.wait_for_timeout(300)
+        page.evaluate('clothApp.advance(0)')
+        assert page.evaluate('clothApp.info().frames') == paused
+        assert errors == []
+    finally:
+        context.close()

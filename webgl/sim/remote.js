@@ -7,7 +7,9 @@
 // copied, whose scripts follow the Worker's frames, and to which gestures and settings are
 // applied too, so that what the page asks synchronously (a setting refused, the scene's keys,
 // which vertex is under a pointer, who holds it) is answered at once from the state it shows.
-// What only the Worker knows comes later: the recording's text (recording(then)).
+// What only the Worker knows comes later: the recording's text (recording(then)). The Worker
+// keeps the simulation's clock (worker.js): the page says whether it runs (running(on)) and
+// takes each state it posts (an acknowledgement asks for the next).
 import { clothCore } from './core.js';
 import { clothPanels } from './panels.js';
 
@@ -33,6 +35,8 @@ export const clothRemote = (function () {
     let asleep = false, atEnd = false, ran = false, recorded = 0, full = false, complete = false;
     let generation = 0;          // the scene opened last (0: none): a state posted for another is dropped
     let simMs = [];
+    let wantRunning = false;     // the page runs the simulation (the Worker's clock goes)
+    let rate = 1;                // simulated seconds per second, the Worker's clock says
     const waiting = {};          // recording requests: id -> then(text)
     let nextId = 1;
     const idleWaiters = [];
@@ -45,7 +49,10 @@ export const clothRemote = (function () {
       const m = e.data;
       if (m.op === 'recording') { const then = waiting[m.id]; delete waiting[m.id]; if (then) then(m.text); return; }
       if (m.op === 'error') { failed(m.message); return; }
-      if (m.op !== 'state' || m.generation !== generation) return;
+      if (m.op !== 'state') return;
+      post({ op: 'ack' });
+      if (m.generation !== generation) return;
+      rate = m.rate;
       if (m.step) inFlight--;
       if (m.done > 0 || m.scriptRan) follow(m);
       const s = local.session();
@@ -95,10 +102,18 @@ export const clothRemote = (function () {
         asleep = false; atEnd = false; ran = false; inFlight = 0;
         simMs = local.times().map(function () { return NaN; });
         generation++;
-        post({ op: 'open', text: text, generation: generation });
+        rate = 1;
+        post({ op: 'open', text: text, generation: generation, running: wantRunning });
       },
-      // Frames run in the Worker: `n` more are asked for when it is idle (request); simulate()
-      // is not used in this mode.
+      // Whether the Worker's clock runs (the page not paused and shown).
+      running: function (on) {
+        on = !!on;
+        if (on !== wantRunning) { wantRunning = on; post({ op: 'run', on: on }); }
+      },
+      // Simulated seconds per wall-clock second, over the Worker's last second.
+      rate: function () { return rate; },
+      // Frames run now in the Worker, beside its clock (the page's Step, the tests): `n` more
+      // when it is idle (request); simulate() is not used in this mode.
       idle: function () { return inFlight === 0; },
       request: function (n, budgetMs) {
         n = session.framesLeft(local.session(), n);
@@ -109,8 +124,16 @@ export const clothRemote = (function () {
       },
       // A Promise that resolves once every frame asked for has come back.
       whenIdle: whenIdle,
-      // A Promise: n frames run (all of them, no budget), once those asked for before are back.
-      run: function (n) { return whenIdle().then(function () { if (n > 0) remote.request(n, 0); return whenIdle(); }); },
+      // A Promise: n frames run (all of them, no budget), once those asked for before are back;
+      // it resolves once the Worker has answered, so every state its clock posted before is in.
+      run: function (n) {
+        return whenIdle().then(function () {
+          n = n > 0 ? session.framesLeft(local.session(), n) : 0;
+          inFlight++;
+          post({ op: 'step', n: n > 0 ? n : 0, budget: 0 });
+          return whenIdle();
+        });
+      },
       asleep: function () { return asleep; },
       scriptRan: function () { const r = ran; ran = false; return r; },
       atReplayEnd: function () { const r = atEnd; atEnd = false; return r; },

@@ -7,6 +7,7 @@
 import { clothCore } from '../sim/core.js';
 import { clothScenes } from '../sim/scenes.js';
 import { clothRunner } from '../sim/runner.js';
+import { clothClock } from '../sim/clock.js';
 import { clothRenderer } from '../draw/renderer.js';
 import { clothCharts } from '../draw/charts.js';
 import { clothCapture } from '../draw/capture.js';
@@ -14,7 +15,7 @@ import { clothGestures } from '../input/gestures.js';
 import { clothInput } from '../input/input.js';
 import { clothReadouts } from './readouts.js';
 
-Object.assign(window, { clothCore, clothScenes, clothRunner, clothRenderer, clothCharts, clothCapture,
+Object.assign(window, { clothCore, clothScenes, clothRunner, clothClock, clothRenderer, clothCharts, clothCapture,
                         clothGestures, clothInput, clothReadouts });
 
 export const clothSeam = (function () {
