@@ -115,6 +115,8 @@ def dispatch(args, page, progress, meta):
         return 'figures', figures.markdown(rows, meta), rows, []
     from bench import front
     meta['seconds'] = front.QUICK_SECONDS if args.quick else front.RUN_SECONDS
+    meta['warm'], meta['block'], meta['rounds'] = ((front.QUICK_WARM, front.QUICK_BLOCK, front.QUICK_ROUNDS)
+                                                   if args.quick else (front.WARM, front.BLOCK, front.ROUNDS))
     sizes = [int(v) for v in args.sizes.split(',')] if args.sizes else None
     rows = front.run(page, args.quick, progress, sizes)
     extra = [('-field.svg', svg_front(rows, 'field', 'Strain-field error against ms per frame', front.DEFAULT)),

@@ -97,6 +97,32 @@
   // Time `frames` frames of each scene in turn, `rounds` times round-robin (the machine's noise
   // falls on all alike); each scene continues from where its last batch left it. Returns per
   // scene the median batch's ms per frame.
+  // The cost of several configurations of one scene, measured side by side: each loaded and
+  // run `warm` frames untimed (the same warm-up), then `rounds` rounds in which each in turn
+  // (the order rotated every round) runs a timed block of `block` frames from where it was.
+  // Returns per configuration its ms a frame in every round (the rounds line up: a ratio of two
+  // configurations is taken round by round, where the machine's noise fell on both alike), and
+  // its sweeps and coarse corrections a frame over the timed blocks.
+  B.interleave = function (texts, warm, block, rounds) {
+    const runs = texts.map(function (t) { return M.run(clothCore.load(t)); });
+    runs.forEach(function (r) { M.step(r, warm, 0); });
+    const ms = texts.map(function () { return []; });
+    const sweeps = texts.map(function () { return 0; }), corrected = texts.map(function () { return 0; });
+    for (let k = 0; k < rounds; k++) {
+      for (let j = 0; j < runs.length; j++) {
+        const i = (j + k) % runs.length, r = runs[i], cl = r.cloth, s0 = cl.sweeps, c0 = cl.corrected;
+        M.step(r, block, 0);
+        ms[i].push(r.ms / block);
+        sweeps[i] += cl.sweeps - s0;
+        corrected[i] += cl.corrected - c0;
+      }
+    }
+    return texts.map(function (t, i) {
+      return { ms: ms[i], sweeps: sweeps[i] / (block * rounds), corrected: corrected[i] / (block * rounds),
+               finite: Array.from(runs[i].cloth.pos).every(Number.isFinite) };
+    });
+  };
+
   B.timeSide = function (texts, frames, rounds) {
     const runs = texts.map(function (t) { return M.run(clothCore.load(t)); });
     const ms = texts.map(function () { return []; });

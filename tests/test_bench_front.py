@@ -12,8 +12,9 @@ from bench import releases as brel
 from cloth.api import load
 
 
-def row(config, ms, field, scene='corners', n=60):
-    return {'scene': scene, 'n': n, 'config': config, 'ms': ms, 'field': field}
+def row(config, ms, field, scene='corners', n=60, ratio=1.0):
+    return {'scene': scene, 'n': n, 'config': config, 'ms': ms, 'field': field,
+            'ratio': ratio, 'ratio_lo': ratio, 'ratio_hi': ratio}
 
 
 def test_the_front_holds_what_no_other_beats_on_both():
@@ -24,14 +25,20 @@ def test_the_front_holds_what_no_other_beats_on_both():
 
 
 def test_the_targets_fail_when_the_default_is_off_the_front_or_too_slow():
-    rows = [row(bf.DEFAULT, 2.0, 0.1), row(bf.SEED, 1.0, 0.5), row('x', 1.5, 0.05)]
+    # The ratio is the side-by-side measurement's (round by round), not ms over ms.
+    rows = [row(bf.DEFAULT, 2.0, 0.1, ratio=1.9), row(bf.SEED, 1.0, 0.5), row('x', 1.5, 0.05)]
     bf.mark_front(rows)
     out = dict(bf.checks(rows))
-    assert list(out.values()) == [False, True]          # off the front; 2x the seed's time
+    assert list(out.values()) == [False, True]          # off the front; 1.9x the seed's time
     rows[0]['ms'] = 4.0
+    rows[0]['ratio'] = 2.1
     rows[2]['field'] = 0.2
     bf.mark_front(rows)
-    assert list(dict(bf.checks(rows)).values()) == [True, False]   # on it, but 4x the seed's
+    assert list(dict(bf.checks(rows)).values()) == [True, False]   # on it, but 2.1x the seed's
+
+
+def test_the_median_of_the_rounds():
+    assert bf.median([3.0, 1.0, 2.0]) == 2.0 and bf.median([4.0, 1.0, 2.0, 3.0]) == 2.5
 
 
 def test_the_errors_of_the_exact_statics_are_zero_and_grow_with_a_displacement():
