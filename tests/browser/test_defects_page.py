@@ -435,6 +435,24 @@ def test_the_help_opens_at_its_title_on_a_small_screen(open_page, size):
     assert title
 
 
+@pytest.mark.parametrize('size', [(1280, 800), (390, 844), (360, 640), (800, 400)])
+def test_a_dialogs_close_is_on_screen_when_it_opens_and_as_it_scrolls(open_page, size):
+    # The help's Close was the card's last line: at 1280x800 it opened at y = 1854, scrolled
+    # out of the dialog. It stays at the top of the card, scrolled to its end too.
+    pg = open_page(viewport={'width': size[0], 'height': size[1]}, has_touch=size[0] < 400)
+    pg.keyboard.press('h')
+    for scroll in ('0', 'c.scrollHeight')[:2]:
+        seen = pg.js("""() => { const c = document.querySelector('#help .card');
+            c.scrollTop = %s;
+            const card = c.getBoundingClientRect(), b = document.getElementById('help-close').getBoundingClientRect();
+            const x = b.left + b.width / 2, y = b.top + b.height / 2;
+            return b.top >= card.top && b.bottom <= card.bottom && b.top >= 0 && b.bottom <= innerHeight &&
+                   b.left >= 0 && b.right <= innerWidth && document.elementFromPoint(x, y) === document.getElementById('help-close'); }""" % scroll)
+        assert seen, (size, scroll)
+    pg.locator('#help-close').click()
+    assert pg.locator('#help').is_hidden()
+
+
 def test_a_key_right_after_closing_an_overlay_is_a_shortcut(open_page):
     # Hiding a focused control leaves focus on it until the browser's next rendering update:
     # a Space pressed at once went to the hidden Close button and paused nothing. Each overlay
