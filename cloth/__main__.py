@@ -2,7 +2,10 @@
 python -m cloth keys: every scene key, its range, unit and default, as a Markdown table (from
 cloth/keys.py KEYS, where each key is declared once).
 
-CPython only (never transpiled). Bad input exits with status 2 and one line naming the key.
+CPython only (never transpiled). Bad input exits with status 2 and one line naming the key
+(JSON that does not parse: its line and column). A run longer than PROGRESS_AFTER shows its
+progress on standard error (a bar on a terminal, a line every PROGRESS_EVERY_LOG seconds
+otherwise); Ctrl+C ends it with a one-line note and status 130.
 """
 
 import argparse
@@ -11,13 +14,19 @@ import os
 import shutil
 import sys
 import tempfile
+import time
 
-from cloth.api import run, load, start, frames_of, simulate, result_of
+from cloth.api import load, start, frames_of, simulate, result_of
 from cloth.host import to_json
 from cloth.values import SceneError
 from cloth.keys import MAX_SCENE_BYTES, KEYS
 from cloth.keys import SOLVERS
 from cloth.scene import too_large
+
+PROGRESS_AFTER = 1.0        # s: a run that ends sooner shows no progress
+PROGRESS_EVERY_TTY = 0.2    # s between redraws of the bar on a terminal
+PROGRESS_EVERY_LOG = 5.0    # s between lines where standard error is a file or a pipe
+BAR = 30
 
 
 class Parser(argparse.ArgumentParser):
@@ -71,15 +80,29 @@ def main(argv=None):
         return 2
     # --panel N counts from 1, as the page labels its panels; the core from 0.
     panel = -1 if args.panel is None else (args.panel - 1 if args.panel >= 1 else 10 ** 9)
+    progress = None
     try:
+        cloth = load(text, panel)
+        frames = frames_of(cloth, args.frames)
+        start(cloth, frames, args.trace)
+        progress = Progress(frames, sys.stderr)
         if args.trace:
-            stream_trace(text, args.frames, sys.stdout, panel)
+            stream_trace(cloth, frames, sys.stdout, progress)
         else:
-            sys.stdout.write(run(text, args.frames, False, panel) + '\n')
+            simulate(cloth, frames, None, progress)
+            progress.end()
+            sys.stdout.write(to_json(result_of(cloth, frames)) + '\n')
         sys.stdout.flush()
     except SceneError as err:
-        sys.stderr.write('error: ' + str(err) + '\n')
+        sys.stderr.write('error: ' + str(err) + where_json_fails(text, str(err)) + '\n')
         return 2
+    except KeyboardInterrupt:
+        # Ctrl+C: the run ends here, with one line saying where, and no result.
+        if progress is not None:
+            progress.end()
+        say('interrupted' + (' at frame %d of %d' % (progress.frame, progress.frames) if progress is not None else '') +
+            ': no result written')
+        return 130
     except BrokenPipeError:
         # The reader went away (`| head`): not an error of ours, and no traceback.
         quiet_stdout()
@@ -115,6 +138,73 @@ def keys_table():
     return '\n'.join(lines) + '\n'
 
 
+def where_json_fails(text, message):
+    """For text that is not JSON, where it fails (Python's parser, the CLI's alone: the core's
+    message is the page's too): ' at line L, column C: what'."""
+    if message != 'scene: not valid JSON':
+        return ''
+    def constant(name):
+        raise ValueError(name + ' is not JSON')
+    try:
+        json.loads(text, parse_constant=constant)
+    except json.JSONDecodeError as err:
+        return ' at line %d, column %d: %s' % (err.lineno, err.colno, err.msg)
+    except ValueError as err:
+        return ' (%s)' % err
+    except RecursionError:
+        return ''
+    return ''
+
+
+class Progress:
+    """A run's progress on `stream` (standard error), once it has taken PROGRESS_AFTER: a bar
+    redrawn in place on a terminal, a line now and then otherwise."""
+
+    def __init__(self, frames, stream):
+        self.frames = frames
+        self.frame = 0
+        self.stream = stream
+        self.t0 = time.monotonic()
+        self.shown = float('-inf')
+        try:
+            self.tty = stream is not None and stream.isatty()
+        except (AttributeError, ValueError):
+            self.tty = False
+        self.drawn = False
+
+    def __call__(self, f):
+        self.frame = f
+        now = time.monotonic()
+        if (self.stream is None or now - self.t0 < PROGRESS_AFTER or
+                now - self.shown < (PROGRESS_EVERY_TTY if self.tty else PROGRESS_EVERY_LOG)):
+            return
+        self.shown = now
+        share = f / self.frames if self.frames > 0 else 1.0
+        left = (now - self.t0) * (self.frames - f) / f
+        if self.tty:
+            full = int(BAR * share)
+            self.stream.write('\r[%s%s] %3d%%  frame %d of %d, %s left ' % (
+                '#' * full, '.' * (BAR - full), int(100 * share), f, self.frames, duration(left)))
+            self.drawn = True
+        else:
+            self.stream.write('frame %d of %d (%d%%), %s left\n' % (f, self.frames, int(100 * share), duration(left)))
+        self.stream.flush()
+
+    def end(self):
+        if self.drawn:
+            self.stream.write('\r' + ' ' * (BAR + 50) + '\r')
+            self.stream.flush()
+            self.drawn = False
+
+
+def duration(seconds):
+    if seconds < 90:
+        return '%d s' % round(seconds)
+    if seconds < 5400:
+        return '%d min' % round(seconds / 60)
+    return '%.1f h' % (seconds / 3600)
+
+
 def quiet_stdout():
     """Python would report the failed flush again at exit: stdout goes to devnull first."""
     try:
@@ -143,14 +233,12 @@ class TraceFile:
         self.count += 1
 
 
-def stream_trace(text, frames, out, panel=-1):
+def stream_trace(cloth, frames, out, progress):
     """The text `run(text, frames, True)` returns, character for character (the trace is
     its last key), written to `out` with the trace streamed through a temporary file."""
-    cloth = load(text, panel)
-    frames = frames_of(cloth, frames)
-    start(cloth, frames, True)
     with tempfile.TemporaryFile('w+', encoding='utf-8') as spool:
-        simulate(cloth, frames, TraceFile(spool))
+        simulate(cloth, frames, TraceFile(spool), progress)
+        progress.end()
         head = to_json(result_of(cloth, frames))
         out.write(head[:-1] + ',"trace":[')
         spool.seek(0)

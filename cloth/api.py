@@ -137,16 +137,19 @@ def apply_due(cloth, next_action, f):
     return due(cloth, next_action, f)
 
 
-def simulate(cloth, frames, trace):
+def simulate(cloth, frames, trace, progress=None):
     """Step `frames` frames. The state at frame f is the state after f frames and the actions
     of frame f: those of frame 0 come before the first frame, and those of the last frame
-    after it (a recording made in the page ends with what a person did at its last frame)."""
+    after it (a recording made in the page ends with what a person did at its last frame).
+    progress(f), if given, after each frame (the CLI's progress on a long run)."""
     next_action = apply_due(cloth, 0, 0)
     for f in range(1, frames + 1):
         frame(cloth)
         next_action = apply_due(cloth, next_action, f)
         if trace is not None:
             trace.append(positions_of(cloth))
+        if progress is not None:
+            progress(f)
 
 
 def run(scene_json_text, frames=None, with_trace=False, panel=-1):

@@ -124,6 +124,14 @@ def legacy_note(scene):
     return text
 
 
+def blank(text):
+    """Whether the text is nothing but JSON's whitespace (stops at the first other character)."""
+    for c in text:
+        if c != ' ' and c != '\t' and c != '\n' and c != '\r':
+            return False
+    return True
+
+
 def parse_scene(text, panel=-1):
     """JSON text -> Scene, or SceneError naming the offending key. With `panel` >= 0, the
     scene of that panel of its `compare` list: the scene with the panel's keys written in."""
@@ -133,7 +141,7 @@ def parse_scene(text, panel=-1):
         fail('scene: nested more than ' + str(MAX_DEPTH) + ' levels deep')
     parsed = parse_json(text)
     if parsed is None:
-        fail('scene: not valid JSON')
+        fail('scene: empty (a scene is a JSON object: docs/scenes.md)' if blank(text) else 'scene: not valid JSON')
     obj = parsed[1]
     scene = scene_from_object(obj)
     if panel < 0:

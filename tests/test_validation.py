@@ -214,6 +214,40 @@ def test_cli_bad_input_is_one_line_and_nonzero(args, stdin, key):
     assert key in lines[0]
 
 
+@pytest.mark.parametrize('stdin,said', [
+    ('', 'scene: empty'), (' \n\t\r\n', 'scene: empty'),
+    ('{"cols": 3,\n "rows": 2,, }', 'scene: not valid JSON at line 2, column 12: Expecting property name'),
+    ('[1, 2', 'scene: not valid JSON at line 1, column 6'),
+    ('{"cols": NaN}', 'scene: not valid JSON (NaN is not JSON)'),
+])
+def test_cli_says_an_empty_scene_is_empty_and_where_json_fails(stdin, said):
+    done = cli('run', '-', '--frames', '1', stdin=stdin)
+    assert done.returncode == 2 and done.stdout == ''
+    assert done.stderr.startswith('error: ' + said) and len(done.stderr.splitlines()) == 1, done.stderr
+
+
+def test_a_long_cli_run_shows_its_progress_and_ctrl_c_ends_it_with_status_130(tmp_path):
+    """A run that takes longer than a second says how far it is on standard error (a line now
+    and then where that is not a terminal); SIGINT (Ctrl+C) ends it with one line saying where,
+    no traceback, no partial JSON, status 130. (A 1000x1000 run printed nothing for minutes.)"""
+    import signal
+    from cloth.presets import preset_scene
+    path = tmp_path / 'large.json'
+    path.write_text(json.dumps(preset_scene('large', 60, 60)))
+    proc = subprocess.Popen([sys.executable, '-m', 'cloth', 'run', str(path), '--frames', '1000000'], cwd=ROOT,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        first = proc.stderr.readline()          # waits for the first progress line
+        assert first.startswith('frame ') and 'of 1000000' in first and 'left' in first, first
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=60)
+    finally:
+        proc.kill()
+    assert proc.returncode == 130 and out == ''
+    assert err.startswith('interrupted at frame ') and err.endswith(': no result written\n'), err
+    assert 'Traceback' not in err
+
+
 def test_every_preset_opens_at_the_grids_the_page_allows():
     """Each preset's scene is valid at the page's smallest and largest grids, a single row or
     column included (a towel one vertex wide once had a peg of no width: "obstacles[0].box:
