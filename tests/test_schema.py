@@ -278,6 +278,29 @@ def test_the_docs_fabric_table_is_the_cores():
         assert '| %s | %g | %g | %g | %g | %s |' % (f[0], f[2], f[3], f[4], f[5], f[6]) in text, f[0]
 
 
+def test_the_readme_stands_alone_and_lists_the_presets_fabrics_and_limits_the_core_has():
+    """The README names every preset and every fabric with its numbers and states the limits as
+    cloth/keys.py has them; it points at nothing outside the repository (a clone has no
+    ../shared: the task is in docs/task.md)."""
+    from pathlib import Path
+    from cloth.fabrics import FABRICS
+    from cloth.presets import PRESETS
+    from cloth import keys
+    root = Path(__file__).resolve().parent.parent
+    text = ' '.join((root / 'README.md').read_text().split())
+    assert '../' not in text and (root / 'docs' / 'task.md').exists()
+    for p in PRESETS:
+        assert p[1] in text, p[1]
+    for f in FABRICS:
+        assert '%s %g, %g, %g, %g' % (f[1], f[2], f[3], f[4], f[5]) in text, f[1]
+    for limit, words in ((keys.MAX_VERTICES, 'vertices'), (keys.MAX_ACTIONS, 'actions'),
+                         (keys.MAX_FRAMES, 'frames'), (keys.MAX_PANELS, 'compare panels'),
+                         (keys.MAX_OBSTACLES, 'obstacles')):
+        assert '{:,} {}'.format(limit, words) in text, words
+    assert '%d MiB of scene JSON' % (keys.MAX_SCENE_BYTES // (1024 * 1024)) in text
+    assert 'nested %d deep' % keys.MAX_DEPTH in text
+
+
 def test_the_load_notes_read_true_when_an_optional_key_is_missing_zero_or_at_its_limits():
     """Every note built from a scene's optional keys (the model, the solver and the fabric's
     numbers) says what the scene holds: a scene without `model` is not said to have one, a
