@@ -149,3 +149,24 @@ def test_text_past_the_limit_never_reaches_the_box(open_page):
     pg = open_page('?paused=1')
     for kind in ('paste', 'drop'):
         into_the_box(pg, kind)
+
+
+TYPED = '''([head, n, tail]) => { const box = document.getElementById('scene-json');
+  box.value = head + 'b'.repeat(n) + tail;
+  box.dispatchEvent(new Event('input', {bubbles: true}));
+  return {value: box.value.length, error: clothApp.info().error, note: clothApp.info().note}; }'''
+
+
+def test_text_typed_past_the_limit_is_refused_as_it_comes_in(open_page):
+    # 20 MiB typed into the box sat in it, laid out, for 14 s before Load refused it: the box's
+    # every way in (paste, drop, typing or an input method) checks the limit as text arrives.
+    pg = open_page('?paused=1')
+    pg.js("document.getElementById('json-box').open = true")
+    before = pg.state()['positions']
+    done = pg.js(TYPED, [HEAD, 20 * 1024 * 1024, TAIL])
+    assert done['value'] == 0 and too_large() in done['error'] and pg.state()['positions'] == before, done
+    pg.js("document.getElementById('banner-close').click()")
+    done = pg.js(TYPED, [HEAD, 3000000, TAIL])
+    assert done['value'] == 0 and done['error'] == '' and '3.0 MB' in done['note'], done
+    pg.locator('#btn-load-json').click()
+    assert len(pg.state()['positions']) == 9

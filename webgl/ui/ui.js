@@ -203,7 +203,14 @@ export const clothUI = (function () {
     }
     el.json.addEventListener('paste', function (e) { intoBox(e, e.clipboardData); });
     el.json.addEventListener('drop', function (e) { intoBox(e, e.dataTransfer); });
-    el.json.addEventListener('input', function () { if (el.json.value !== '') forget(); });
+    // Typed, or set by a script or an input method: the same bounds, as the text comes in (20
+    // MiB typed sat in the box, laid out, for 14 s before Load said it was too large).
+    el.json.addEventListener('input', function () {
+      const text = el.json.value;
+      if (text.length > limit.bytes) { el.json.value = ''; forget(); ui.error('Scene not taken: ' + limit.message); }
+      else if (text.length > BOX_SHOWN) hold(text, 'Typed');
+      else if (text !== '') forget();
+    });
     el.loadJson.addEventListener('click', function () {
       const text = heldText !== null && el.json.value === '' ? heldText : el.json.value;
       try { h.loadJson(text); } catch (e) { /* shown in the banner */ }
