@@ -89,7 +89,7 @@ import { clothViews } from './draw/views.js';
     settings: function () { return settings; },
   });
   const files = clothFiles.create({
-    panels: panels, load: scene.load, render: render, setPaused: setPaused, preset: scene.preset, view: scene.view,
+    panels: panels, load: scene.load, loadNote: scene.loadNote, render: render, setPaused: setPaused, preset: scene.preset, view: scene.view,
     comparing: function () { return scene.compare().length > 0; }, drawable: function () { return renderer.ok; },
     paused: function () { return paused; },
   }, capture, ui);

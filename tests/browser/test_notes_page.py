@@ -68,3 +68,36 @@ def test_a_link_whose_scene_holds_no_frames_says_it_runs_live(open_page):
     note = pg.info()['note']
     assert 'holds no recorded frames' in note and '-1' not in note, note
     assert len(pg.state()['positions']) == 30
+
+
+def test_every_way_a_scene_comes_in_says_it_was_made_before_the_membrane(open_page, tmp_path):
+    """An older model's note is the scene's, whatever brought it: the Scene JSON box, a file
+    opened, a file dropped, a link (the file's, the drop's and the link's own words replaced it).
+    Each says its own words too."""
+    old = json.dumps({'cols': 6, 'rows': 5, 'spacing': 0.1, 'pins': [0, 5], 'frames': 3})
+    path = tmp_path / 'old.json'
+    path.write_text(old)
+    pg = open_page('?paused=1')
+    said = {}
+    pg.js("document.getElementById('json-box').open = true")
+    pg.js('''(t) => { const box = document.getElementById('scene-json'); box.value = t;
+      box.dispatchEvent(new Event('input', {bubbles: true})); }''', old)
+    pg.locator('#btn-load-json').click()
+    said['box'] = pg.info()['note']
+    pg.locator('#file-input').set_input_files(str(path))
+    pg.page.wait_for_function("() => clothApp.info().note.indexOf('Opened old.json') >= 0")
+    said['file'] = pg.info()['note']
+    pg.js('''(t) => { const dt = new DataTransfer(); dt.items.add(new File([t], 'dropped.json', {type: 'application/json'}));
+      document.getElementById('view').dispatchEvent(new DragEvent('drop', {dataTransfer: dt, bubbles: true, cancelable: true})); }''', old)
+    pg.page.wait_for_function("() => clothApp.info().note.indexOf('Opened dropped.json') >= 0")
+    said['drop'] = pg.info()['note']
+    # A link: the recording of the scene the box loaded (it keeps the scene's older model).
+    pg.locator('#btn-load-json').click()
+    url = pg.js('clothApp.link()')
+    other = open_page()
+    other.goto(url)
+    other.page.wait_for_function("() => clothApp.info().note.indexOf('from the link') >= 0")
+    said['link'] = other.info()['note']
+    for how, note in said.items():
+        assert 'made before the membrane model' in note, (how, note)
+    assert 'Opened old.json' in said['file'] and 'Opened dropped.json' in said['drop']

@@ -10,18 +10,24 @@ import { clothReadouts } from './readouts.js';
 export const clothFiles = (function () {
   const share = clothShare, scenes = clothScenes;
 
-  // app: {panels (sim/panels.js), load(text, preset, view), preset(), view(), comparing()
+  // app: {panels (sim/panels.js), load(text, preset, view), loadNote() (what the last load
+  // said of its scene), preset(), view(), comparing()
   // (compare mode runs), render(), drawable() (WebGL draws), paused(), setPaused(on)}; capture
   // (capture.js), ui.
   function create(app, capture, ui) {
     const panels = app.panels;
     let linkPending = false;     // a link is being opened (its scene inflates later)
 
+    // What an import path says of the scene it loaded, with what the load said of the scene
+    // itself (an older model, a heavy grid): one note, so that every way in says the same
+    // (the file, the drop and the link's own words once replaced the older model's note).
+    function say(text) { ui.note([text].concat(app.loadNote() ? [app.loadNote()] : []).join('; ')); }
+
     // Restart the recording from frame 0 at real speed.
     function replay() {
       panels.recording(function (text) {
         app.load(text, app.preset(), app.view());
-        ui.note(clothReadouts.replayNote(panels.replayEnd(), ''));
+        say(clothReadouts.replayNote(panels.replayEnd(), ''));
       });
     }
 
@@ -48,7 +54,7 @@ export const clothFiles = (function () {
     function openFile(file) {
       share.readFile(file).then(function (text) {
         app.load(text, 'custom', null);
-        ui.note('Opened ' + file.name);
+        say('Opened ' + file.name);
       }).catch(function (e) {
         ui.error('Scene not loaded: ' + clothCore.message(e) + ' (' + file.name + '; the previous scene keeps running)');
       });
@@ -66,7 +72,7 @@ export const clothFiles = (function () {
       linkPending = true;
       linked.then(function (text) {
         app.load(text, 'custom', null);
-        ui.note(clothReadouts.replayNote(panels.replayEnd(), 'the link'));
+        say(clothReadouts.replayNote(panels.replayEnd(), 'the link'));
       }).catch(function (e) {
         const shown = clothOptions.own(scenes.PRESETS, app.preset())
           ? 'showing the ' + scenes.PRESETS[app.preset()].label + ' preset' : 'the scene shown runs on';
