@@ -74,7 +74,10 @@ import { clothViews } from './draw/views.js';
   const charts = clothCharts.create(document.getElementById('charts'));
   const renderer = clothRenderer.create(canvas, {
     webgl: options.webgl,
-    onLost: function () { ui.error('The WebGL context was lost; waiting for the browser to restore it.', 'context'); },
+    onLost: function () {
+      ui.error('The WebGL context was lost; waiting for the browser to restore it.', 'context');
+      obstacles.draw([], [], -1);
+    },
     onRestored: function () { ui.clearError('context'); views.restored(); dirty = true; },
     onError: function (msg) { ui.fatal(msg); },
   });
@@ -133,7 +136,10 @@ import { clothViews } from './draw/views.js';
   function stopped(msg) { setPaused(true); ui.error('Simulation stopped: ' + msg); }
 
   function render() {
-    if (!views.count() || !renderer.ok || renderer.lost) return;
+    if (!views.count() || !renderer.ok) return;
+    // The obstacles' layer never outlives the drawing it belongs to: while no cloth can be
+    // drawn (a lost context), none is shown (a peg stayed over four presets after one).
+    if (renderer.lost) { obstacles.draw([], [], -1); return; }
     overlays.fade(gestures.count() > 0, views.heldPoints);
     panels.refresh();
     painter.draw(views.list(), panels.reads(), colours, views.rects(), gestures.moving());

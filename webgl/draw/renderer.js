@@ -24,7 +24,11 @@
 // closer than two alias with the pixel grid into bands that are not in the field (a 150x150
 // curtain showed a stripe every 13 rows over a smooth strain). There the cells are filled
 // instead, one indexed draw of two triangles a cell, each vertex coloured by the largest value
-// of its edges (strain) or its node stress, interpolated across the cell.
+// of its edges (strain) or its node stress, interpolated across the cell; and the cloth's
+// outline (every structural edge with an intact cell on at most one side: the border, a cut's
+// lips, a strand) drawn over them as edges, so that a cloth folded or pulled narrower than a
+// pixel, whose cells cover no pixel's centre, still shows (the Chain at 60x60 folded into a
+// strip 6.6 mm wide, under a pixel, and was not drawn at all).
 //
 // Colour (shaders/colour.glsl, t = clamp(value / scale, 0, 1)):
 //   strain: value = |diff| of the edge at both ends, red = base + (1 - base) * t,
@@ -231,6 +235,10 @@ export const clothRenderer = (function () {
       let cellData = new Float32Array(0), cellSum = new Float32Array(0);
       let cellIdx = new Uint32Array(0), right = new Uint8Array(0), down = new Uint8Array(0);
       let far = new Uint8Array(0), nFar = 0;
+      // The outline's edges (indices into the snapshot's), found with the cells: each
+      // structural edge's intact cells (rightCells, downCells: 0, 1 or 2) and index.
+      let rightCells = new Uint8Array(0), downCells = new Uint8Array(0);
+      let rightEdge = new Int32Array(0), downEdge = new Int32Array(0), outline = new Int32Array(0), nOutline = 0;
       let cellView = cellData, nCellIdx = 0, cellsFor = -1, cols = 0, rows = 0;
       let edgeData = new Float32Array(0), markData = new Float32Array(0);
       let edgeView = edgeData;  // edgeData's first 6 * n_edges floats, made once per scene
@@ -325,6 +333,11 @@ export const clothRenderer = (function () {
           right = new Uint8Array(nv);
           down = new Uint8Array(nv);
           far = new Uint8Array(nv);
+          rightCells = new Uint8Array(nv);
+          downCells = new Uint8Array(nv);
+          rightEdge = new Int32Array(nv);
+          downEdge = new Int32Array(nv);
+          outline = new Int32Array(2 * nv);
           gl.bindBuffer(gl.ARRAY_BUFFER, cellBuf);
           gl.bufferData(gl.ARRAY_BUFFER, cellData.byteLength, gl.DYNAMIC_DRAW);
         }
@@ -354,21 +367,27 @@ export const clothRenderer = (function () {
       function findCells(snap) {
         if (cellsFor === snap.n_edges && nFar === 0) return;
         const nv = snap.n_verts, ea = snap.edge_a, eb = snap.edge_b;
-        for (let k = 0; k < nv; k++) { right[k] = 0; down[k] = 0; }
+        for (let k = 0; k < nv; k++) { right[k] = 0; down[k] = 0; rightCells[k] = 0; downCells[k] = 0; }
         for (let e = 0; e < snap.n_edges; e++) {
           const a = Math.min(ea[e], eb[e]), b = Math.max(ea[e], eb[e]);
-          if (b === a + 1) right[a] = 1;
-          else if (b === a + cols) down[a] = 1;
+          if (b === a + 1) { right[a] = 1; rightEdge[a] = e; }
+          else if (b === a + cols) { down[a] = 1; downEdge[a] = e; }
         }
         nCellIdx = 0;
         for (let r = 0; r + 1 < rows; r++) {
           for (let c = 0; c + 1 < cols; c++) {
             const k = r * cols + c;
             if (!right[k] || !down[k] || !right[k + cols] || !down[k + 1]) continue;
+            rightCells[k]++; rightCells[k + cols]++; downCells[k]++; downCells[k + 1]++;
             if (nFar > 0 && (far[k] || far[k + 1] || far[k + cols] || far[k + cols + 1])) continue;
             cellIdx[nCellIdx++] = k; cellIdx[nCellIdx++] = k + 1; cellIdx[nCellIdx++] = k + cols;
             cellIdx[nCellIdx++] = k + 1; cellIdx[nCellIdx++] = k + cols + 1; cellIdx[nCellIdx++] = k + cols;
           }
+        }
+        nOutline = 0;
+        for (let k = 0; k < nv; k++) {
+          if (right[k] && rightCells[k] < 2) outline[nOutline++] = rightEdge[k];
+          if (down[k] && downCells[k] < 2) outline[nOutline++] = downEdge[k];
         }
         gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, cellIdxBuf);
         gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, cellIdx.subarray(0, nCellIdx), gl.DYNAMIC_DRAW);
@@ -455,9 +474,18 @@ export const clothRenderer = (function () {
         const ed = edgeData;
         const stressMode = mode === 'stress';
         const fill = bigIndices && cols > 1 && rows > 1 && spacing * s < FILL_CELL_CSS;
+        let nd = ne;                  // the edges drawn as edges: all, or the outline's
         if (fill) {
           vertexValues(snap, stressMode);
           findCells(snap);
+          nd = nOutline;
+          const v = stressMode ? snap.vertex_value : snap.edge_value;
+          for (let i = 0, o = 0; i < nOutline; i++, o += 6) {
+            const e = outline[i], a = ea[e], b = eb[e];
+            ed[o] = pos[2 * a]; ed[o + 1] = pos[2 * a + 1];
+            ed[o + 2] = pos[2 * b]; ed[o + 3] = pos[2 * b + 1];
+            ed[o + 4] = stressMode ? v[a] : Math.abs(v[e]); ed[o + 5] = stressMode ? v[b] : Math.abs(v[e]);
+          }
         } else if (stressMode) {
           const q = snap.vertex_value;
           for (let e = 0, o = 0; e < ne; e++, o += 6) {
@@ -509,17 +537,17 @@ export const clothRenderer = (function () {
           gl.drawElements(gl.TRIANGLES, nCellIdx, gl.UNSIGNED_INT, 0);
           r.drawCalls++;
         }
-        if (!fill && ne > 0 && perRow > 0) {
+        if (nd > 0 && perRow > 0) {
           gl.bindTexture(gl.TEXTURE_2D, edgeTex);
-          gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, 3 * perRow, Math.ceil(ne / perRow), gl.RG, gl.FLOAT, edgeData, 0);
+          gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, 3 * perRow, Math.ceil(nd / perRow), gl.RG, gl.FLOAT, edgeData, 0);
           useColoured(fetchProg, px, offX, offY, vw, vh, stressMode, scale);
           gl.uniform1f(fetchProg.u.u_halfWidth, halfWidth(px));
           gl.uniform1i(fetchProg.u.u_perRow, perRow);
           gl.uniform1i(fetchProg.u.u_edges, 0);
           for (let i = 0; i <= 3; i++) gl.disableVertexAttribArray(i);
-          gl.drawArrays(gl.TRIANGLES, 0, 6 * ne);
+          gl.drawArrays(gl.TRIANGLES, 0, 6 * nd);
           r.drawCalls++;
-        } else if (!fill && ne > 0) {
+        } else if (nd > 0) {
           gl.bindBuffer(gl.ARRAY_BUFFER, edgeBuf);
           gl.bufferSubData(gl.ARRAY_BUFFER, 0, edgeView);
           useColoured(edgeProg, px, offX, offY, vw, vh, stressMode, scale);
@@ -533,7 +561,7 @@ export const clothRenderer = (function () {
           gl.vertexAttribPointer(1, 2, gl.FLOAT, false, 24, 0);
           gl.vertexAttribPointer(2, 2, gl.FLOAT, false, 24, 8);
           gl.vertexAttribPointer(3, 2, gl.FLOAT, false, 24, 16);
-          inst.draw(gl.TRIANGLE_STRIP, 0, 4, ne);
+          inst.draw(gl.TRIANGLE_STRIP, 0, 4, nd);
           r.drawCalls++;
           inst.divisor(3, 0);
           gl.disableVertexAttribArray(3);

@@ -39,7 +39,7 @@ export const clothScene = (function () {
         ui.error('Scene not loaded: ' + msg + (obj ? ' (the previous scene keeps running)' : ''));
         throw new Error(msg);
       }
-      ui.clearError();
+      ui.clearError(undefined, 'context');   // a load ends its own errors, not a lost context's
       const gestures = app.gestures();
       gestures.releaseAll(holds || []);
       compare = Array.isArray(parsed.compare) ? parsed.compare.map(function (o) { return Object.assign({}, o); }) : [];

@@ -371,8 +371,11 @@ export const clothUI = (function () {
       error: function (msg, about) {
         el.bannerText.textContent = msg; el.banner.hidden = false; errorAbout = about || '';
       },
-      clearError: function (about) {
+      // clearError(): any error; clearError(about): that one's; clearError(undefined, keep):
+      // any but that one.
+      clearError: function (about, keep) {
         if (about !== undefined && about !== errorAbout) return;
+        if (keep !== undefined && keep === errorAbout) return;
         hide(el.banner); el.bannerText.textContent = ''; errorAbout = '';
       },
       errorText: function () { return el.banner.hidden ? '' : el.bannerText.textContent; },
