@@ -453,6 +453,27 @@ def test_a_dialogs_close_is_on_screen_when_it_opens_and_as_it_scrolls(open_page,
     assert pg.locator('#help').is_hidden()
 
 
+TAP_TARGETS = """() => { const out = [];
+  for (const e of document.querySelectorAll('button, input, select, summary, a[href], textarea, [role=button]')) {
+    if (e.offsetParent === null && getComputedStyle(e).position !== 'fixed') continue;
+    let r = e.getBoundingClientRect();
+    const label = e.closest('label');           // a checkbox's target is its label
+    if (label && (e.type === 'checkbox' || e.type === 'radio')) r = label.getBoundingClientRect();
+    if (r.width > 0 && r.height > 0 && (r.width < 24 || r.height < 24))
+      out.push([e.tagName, e.id || e.name || e.textContent.trim().slice(0, 20), Math.round(r.width), Math.round(r.height)]);
+  }
+  return out; }"""
+
+
+@pytest.mark.parametrize('size', [(390, 844), (360, 640), (1280, 800)])
+def test_every_tap_target_is_at_least_24_px(open_page, size):
+    # WCAG 2.2's minimum target size: the Live charts box (19 px) and the Scene JSON summary
+    # (17 px) were under it on phones and on a laptop.
+    pg = open_page(viewport={'width': size[0], 'height': size[1]}, has_touch=size[0] < 400)
+    pg.js("document.getElementById('json-box').open = true")
+    assert pg.js(TAP_TARGETS) == []
+
+
 def test_a_key_right_after_closing_an_overlay_is_a_shortcut(open_page):
     # Hiding a focused control leaves focus on it until the browser's next rendering update:
     # a Space pressed at once went to the hidden Close button and paused nothing. Each overlay
