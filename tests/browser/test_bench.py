@@ -55,14 +55,18 @@ def test_every_configuration_ran_and_the_table_matches_the_json(quick):
         assert [r[0] for r in table] == front.QUICK_CONFIGS, (scene, table)
         for cells in table:
             r = next(r for r in rows if r['scene'] == scene and r['n'] == 30 and r['config'] == cells[0])
+            # | configuration | ms/frame | x seed (range) | sweeps | corrections | field error | ...
             assert float(cells[1]) == pytest.approx(r['ms'], rel=5e-3)
-            assert float(cells[2]) == pytest.approx(r['field'], rel=5e-2)
+            assert float(cells[2].split()[0]) == pytest.approx(r['ratio'], abs=5e-3)
+            assert r['ratio_lo'] <= r['ratio'] <= r['ratio_hi']
+            assert float(cells[5]) == pytest.approx(r['field'], rel=5e-2)
             assert r['ms'] > 0 and r['field'] >= 0 and r['shape'] >= 0
         # What the exact statics tell apart: the seed's rigid sweeps are far from the
         # membrane's field, the default close to it.
         d = next(r for r in rows if r['scene'] == scene and r['config'] == front.DEFAULT)
         s = next(r for r in rows if r['scene'] == scene and r['config'] == front.SEED)
         assert d['field'] < 0.1 < s['field'], (d, s)
+        assert s['ratio'] == s['ratio_lo'] == s['ratio_hi'] == 1.0     # the seed against itself
     # The targets are printed, one line per scene at least.
     assert len(re.findall(r'^- (PASS|FAIL): ', md, re.M)) >= len(front.SCENES)
 
