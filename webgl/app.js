@@ -228,7 +228,8 @@ import { clothViews } from './draw/views.js';
   // the panels' actions: applied at once in every panel and recorded at the current frame. A
   // person acting during a replay takes over.
   const gestures = clothGestures.create({
-    locate: views.locate, toWorld: views.toWorld, pick: views.pick, positionOf: views.positionOf,
+    locate: views.locate, toWorld: views.toWorld, toWorldWithin: views.toWorldWithin, pick: views.pick,
+    positionOf: views.positionOf,
     obstacleAt: views.obstacleAt, centreOf: views.centreOf,
     // Held by someone else: another pointer, or the scene's script (a replay's script lets go
     // when a person takes over, so its vertices can be grabbed then).

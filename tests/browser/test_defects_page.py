@@ -751,3 +751,28 @@ def test_sideways_wheels_never_leave_the_page(open_page):
         pg.mouse.wheel(dx, dy)
         pg.wait_for_timeout(150)
     assert pg.url.startswith(DIST.as_uri()) and pg.js('typeof clothApp') == 'object'
+
+
+@pytest.mark.parametrize('where', ['above the stage', 'beyond its right edge'])
+def test_a_pin_dragged_off_the_stage_can_still_be_reached_and_unpinned(open_page, where):
+    # A pin dragged up off the stage, or past its edge toward the side panel, stayed there,
+    # out of reach: it could not be clicked to unpin. A hand goes no farther than the panel's
+    # rectangle (a few px inside it), so what a person leaves can always be taken again.
+    pg = open_page('?paused=1')
+    load_paused(pg, json.dumps({'model': MODEL, 'cols': 8, 'rows': 6, 'spacing': 0.1, 'pins': [0, 7],
+                                'gravity': [0, 0]}))
+    x, y = pg.state()['screen'][7]
+    rect = pg.js("(() => { const r = document.getElementById('view').getBoundingClientRect(); "
+                 "return [r.left, r.top, r.right, r.bottom]; })()")
+    to = (x, rect[1] - 300) if where == 'above the stage' else (rect[2] + 300, y)
+    pg.mouse.move(x, y)
+    pg.mouse.down()
+    pg.mouse.move(to[0], to[1], steps=8)
+    pg.js('clothApp.advance(30)')
+    pg.mouse.up()
+    pg.js('clothApp.advance(5)')
+    px, py = pg.state()['screen'][7]
+    assert rect[0] <= px <= rect[2] and rect[1] <= py <= rect[3], (px, py, rect)
+    assert pg.state()['pinned'][7]
+    pg.mouse.click(px, py, button='right')
+    assert not pg.state()['pinned'][7]

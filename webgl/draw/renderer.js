@@ -442,6 +442,8 @@ export const clothRenderer = (function () {
         fitBox = w === undefined ? null : { x: x, y: y, w: Math.max(w, 1), h: Math.max(h, 1) };
         p.fit();
       };
+      // The panel's rectangle, CSS px inside the canvas.
+      p.box = function () { return box(); };
       p.contains = function (cx, cy) {
         const b = box();
         return cx >= b.x && cx < b.x + b.w && cy >= b.y && cy < b.y + b.h;

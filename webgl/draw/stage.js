@@ -66,6 +66,19 @@ export const clothStage = (function () {
     return panel.draw.toWorld(clientX - r.left, clientY - r.top);
   }
 
+  // The same, the point first brought INSET px inside the panel's rectangle: where a hand or
+  // a dragged obstacle goes, so that what a person leaves anywhere can be reached again (a pin
+  // dragged up off the stage could no longer be clicked to unpin; in compare mode, a pin
+  // dragged out of its panel was clipped away).
+  const INSET = 8;
+  function toWorldWithin(canvas, panel, clientX, clientY) {
+    const r = canvas.getBoundingClientRect(), b = panel.draw.box();
+    const inset = Math.min(INSET, b.w / 4, b.h / 4);
+    const cx = Math.min(Math.max(clientX - r.left, b.x + inset), b.x + b.w - inset);
+    const cy = Math.min(Math.max(clientY - r.top, b.y + inset), b.y + b.h - inset);
+    return panel.draw.toWorld(cx, cy);
+  }
+
   // Every held vertex of every panel ({snap, draw}: its snapshot's held, pos and target), and
   // its hand (which a hand of finite strength's vertex may lag behind or stop short of), in
   // canvas CSS px, to `visit` until it says stop.
@@ -111,5 +124,6 @@ export const clothStage = (function () {
     try { ro.observe(canvas, { box: 'device-pixel-content-box' }); } catch (e) { ro.observe(canvas); }
   }
 
-  return { layout: layout, locate: locate, toWorld: toWorld, heldPoints: heldPoints, watch: watch };
+  return { layout: layout, locate: locate, toWorld: toWorld, toWorldWithin: toWorldWithin, heldPoints: heldPoints,
+           watch: watch };
 })();

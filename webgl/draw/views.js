@@ -38,6 +38,8 @@ export const clothViews = (function () {
       // A pointer at client px -> {panel (-1: none), x, y (world metres there)}.
       locate: function (x, y) { return renderer.ok ? stage.locate(canvas, list, x, y) : { panel: -1, x: NaN, y: NaN }; },
       toWorld: function (i, x, y) { return stage.toWorld(canvas, list[Math.min(i, list.length - 1)], x, y); },
+      // The same, the point kept inside panel i's rectangle (stage.toWorldWithin).
+      toWorldWithin: function (i, x, y) { return stage.toWorldWithin(canvas, list[Math.min(i, list.length - 1)], x, y); },
       // The vertex of panel i nearest world (x, y) within radiusCss CSS px, or -1.
       pick: function (i, x, y, radiusCss) {
         return !list.length || !renderer.ok || i < 0 ? -1 : panels.nearest(i, x, y, radiusCss / list[i].draw.pixelsPerMetre());

@@ -13,7 +13,8 @@
 
 export const clothGestures = (function () {
   // view: {locate(clientX, clientY) -> {panel, x, y} (the panel under the point, -1 for none,
-  //        and world metres there), toWorld(panel, clientX, clientY) -> [x, y],
+  //        and world metres there), toWorld(panel, clientX, clientY) -> [x, y], toWorldWithin (the
+  //        same, the point kept inside the panel: where hands and obstacles go),
   //        pick(panel, x, y, radiusCss) -> k, positionOf(panel, k) -> [x, y], isHeld(k),
   //        obstacleAt(panel, x, y) -> the obstacle there or -1, centreOf(j) -> [x, y],
   //        bladeOn() -> whether the Cut tool is on, trail(clientX, clientY, start) (where the
@@ -37,7 +38,7 @@ export const clothGestures = (function () {
 
     function follow(h, clientX, clientY) {
       h.cx = clientX; h.cy = clientY;
-      const w = view.toWorld(h.panel, clientX, clientY);
+      const w = view.toWorldWithin(h.panel, clientX, clientY);     // never out of reach
       act.move(h.k, w[0] + h.ox, w[1] + h.oy);
     }
 
@@ -68,7 +69,7 @@ export const clothGestures = (function () {
       drag: function (id, clientX, clientY) {
         const m = movers.get(id);
         if (m) {
-          const w = view.toWorld(m.panel, clientX, clientY);
+          const w = view.toWorldWithin(m.panel, clientX, clientY);
           act.obstacle(m.j, w[0] + m.ox, w[1] + m.oy);
           return true;
         }
@@ -82,7 +83,7 @@ export const clothGestures = (function () {
       lift: function (id, clientX, clientY, landed) {
         const m = movers.get(id);
         if (m) {
-          if (landed) { const w = view.toWorld(m.panel, clientX, clientY); act.obstacle(m.j, w[0] + m.ox, w[1] + m.oy); }
+          if (landed) { const w = view.toWorldWithin(m.panel, clientX, clientY); act.obstacle(m.j, w[0] + m.ox, w[1] + m.oy); }
           movers.delete(id);
           if (m.j === lastMoved) lastMoved = -1;
           return -1;
@@ -143,7 +144,7 @@ export const clothGestures = (function () {
         hands.forEach(function (h) {
           if (!h.fresh) return;
           h.fresh = false;
-          const v = view.positionOf(h.panel, h.k), w = view.toWorld(h.panel, h.cx, h.cy);
+          const v = view.positionOf(h.panel, h.k), w = view.toWorldWithin(h.panel, h.cx, h.cy);
           h.ox = v[0] - w[0]; h.oy = v[1] - w[1];
           act.grab(h.k, v[0], v[1]);
         });
